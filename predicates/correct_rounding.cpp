@@ -1,0 +1,89 @@
+#include "correct_rounding.h"
+
+#include <mpfr.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace apollonius {
+namespace {
+
+constexpr mpfr_prec_t kPrecision = 256;
+
+class Mpfr {
+ public:
+  Mpfr() { mpfr_init2(value_, kPrecision); }
+  explicit Mpfr(const Exact& x) : Mpfr() { mpfr_set_z_2exp(value_, x.man(), x.exp(), MPFR_RNDN); }
+  ~Mpfr() { mpfr_clear(value_); }
+  Mpfr(const Mpfr&) = delete;
+  Mpfr& operator=(const Mpfr&) = delete;
+  mpfr_ptr get() { return value_; }
+
+ private:
+  mpfr_t value_;
+};
+
+bool is_even(double g) {
+  std::uint64_t bits;
+  static_assert(sizeof bits == sizeof g);
+  std::memcpy(&bits, &g, sizeof g);
+  return (bits & 1u) == 0;
+}
+
+// The exact midpoint between g and its neighbour towards `direction` (+-infinity).
+Exact midpoint_towards(double g, double direction) {
+  const double neighbour = std::nextafter(g, direction);
+  if (std::isinf(neighbour)) {
+    const double inner = std::nextafter(g, -direction);
+    return Exact(g) + (Exact(g) - Exact(inner)) * Exact(0.5);
+  }
+  return (Exact(g) + Exact(neighbour)) * Exact(0.5);
+}
+
+Sign compare_with(const Root_number<Exact>& x, const Exact& m) {
+  return compare(x, Root_number<Exact>{m, Exact(0), Exact(0), Exact(1)});
+}
+
+}  // namespace
+
+double approximate(const Root_number<Exact>& x) {
+  Mpfr a(x.a), b(x.b), d(x.d), den(x.denominator), result;
+  const Sign sa = certain_sign(x.a), sb = certain_sign(x.b);
+  mpfr_sqrt(d.get(), d.get(), MPFR_RNDN);
+  if (sb == Sign::ZERO || sa == Sign::ZERO || sa == sb || certain_sign(x.d) == Sign::ZERO) {
+    mpfr_fma(result.get(), b.get(), d.get(), a.get(), MPFR_RNDN);  // a + b sqrt d, no cancellation
+  } else {
+    // a + b sqrt d = (a^2 - b^2 d) / (a - b sqrt d), where a and -b sqrt d have the same sign.
+    Mpfr numerator(x.a * x.a - x.b * x.b * x.d), conjugate;
+    mpfr_mul(conjugate.get(), b.get(), d.get(), MPFR_RNDN);
+    mpfr_sub(conjugate.get(), a.get(), conjugate.get(), MPFR_RNDN);
+    mpfr_div(result.get(), numerator.get(), conjugate.get(), MPFR_RNDN);
+  }
+  mpfr_div(result.get(), result.get(), den.get(), MPFR_RNDN);
+  return mpfr_get_d(result.get(), MPFR_RNDN);
+}
+
+double to_nearest_double(const Root_number<Exact>& x) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double g = approximate(x);
+  if (std::isinf(g)) g = std::copysign(std::numeric_limits<double>::max(), g);
+  for (;;) {
+    const Sign below = compare_with(x, midpoint_towards(g, -inf));
+    if (below == Sign::NEGATIVE || (below == Sign::ZERO && !is_even(g))) {
+      if (g == -std::numeric_limits<double>::max()) return -inf;
+      g = std::nextafter(g, -inf);
+      continue;
+    }
+    const Sign above = compare_with(x, midpoint_towards(g, inf));
+    if (above == Sign::POSITIVE || (above == Sign::ZERO && !is_even(g))) {
+      if (g == std::numeric_limits<double>::max()) return inf;
+      g = std::nextafter(g, inf);
+      continue;
+    }
+    return g == 0 ? 0.0 : g;
+  }
+}
+
+}  // namespace apollonius

@@ -1,0 +1,16 @@
+// The double nearest to an exact root number (ties to even): the printed coordinates of a vertex.
+// The value is only ever output; nothing is decided from it.
+#pragma once
+
+#include "root_sign.h"
+
+namespace apollonius {
+
+// Correctly rounded: a 256-bit MPFR estimate proposes a double, and exact comparisons with the midpoints
+// to its neighbours confirm it or move it by one ulp. Overflows round to +-infinity.
+double to_nearest_double(const Root_number<Exact>& x);
+
+// A close approximation (MPFR, 256 bits, without cancellation), for estimates and error reports.
+double approximate(const Root_number<Exact>& x);
+
+}  // namespace apollonius

@@ -1,0 +1,72 @@
+// The points where the line of a quadruple meets the cone (quadruple_line.h): the roots of
+// A lambda^2 + 2 B lambda + C = 0 and the coordinates X = (Q + lambda n) / n_k they give.
+#pragma once
+
+#include <vector>
+
+#include "vertex.h"
+
+namespace apollonius {
+
+// What the cone equation leaves of the line: isolated roots, or the whole line (a curve of equidistant
+// points: no isolated vertex).
+template <class NT>
+struct Line_roots {
+  bool whole_line_on_cone = false;
+  std::vector<Line_root<NT>> roots;  // in the order MINUS, PLUS, or one SINGLE
+};
+
+template <class NT>
+Root_number<NT> positive_denominator(NT a, NT b, NT d, NT denominator) {
+  if (certain_sign(denominator) == Sign::NEGATIVE) return {-a, -b, d, -denominator};
+  return {a, b, d, denominator};
+}
+
+// Precondition: line.pivot >= 0.
+template <class NT>
+Line_roots<NT> line_roots(const Quadruple_line<NT>& line) {
+  Line_roots<NT> result;
+  const NT zero(0);
+  if (certain_sign(line.A) != Sign::ZERO) {
+    const Sign s = certain_sign(line.discriminant);
+    if (s == Sign::ZERO) {
+      result.roots.push_back({Root::SINGLE, positive_denominator(-line.B, zero, zero, line.A)});
+    } else if (s == Sign::POSITIVE) {
+      for (Root r : {Root::MINUS, Root::PLUS})
+        result.roots.push_back(
+            {r, positive_denominator(-line.B, NT(static_cast<int>(r)), line.discriminant, line.A)});
+    }
+  } else if (certain_sign(line.B) != Sign::ZERO) {
+    result.roots.push_back({Root::SINGLE, positive_denominator(-line.C, zero, zero, NT(2) * line.B)});
+  } else {
+    result.whole_line_on_cone = certain_sign(line.C) == Sign::ZERO;
+  }
+  return result;
+}
+
+// X_j = (Q_j + lambda n_j) / n_k with lambda = (a + b sqrt d) / den.
+inline Vertex_coordinates<Interval> coordinates_on_line(const Quadruple_line<Interval>& line,
+                                                        const Root_number<Interval>& lambda) {
+  const Interval l = (lambda.a + lambda.b * CGAL::sqrt(lambda.d)) / lambda.denominator;
+  Vertex_coordinates<Interval> V;
+  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
+  return V;
+}
+
+// Over the common denominator den * |n_k|.
+inline Vertex_coordinates<Exact> coordinates_on_line(const Quadruple_line<Exact>& line,
+                                                     const Root_number<Exact>& lambda) {
+  const Exact& nk = line.n[line.pivot];
+  const bool flip = certain_sign(nk) == Sign::NEGATIVE;
+  Vertex_coordinates<Exact> V;
+  V.denominator = flip ? -(lambda.denominator * nk) : lambda.denominator * nk;
+  V.discriminant = lambda.d;
+  for (int j = 0; j < 4; ++j) {
+    Exact a = line.Q[j] * lambda.denominator + line.n[j] * lambda.a;
+    Exact b = line.n[j] * lambda.b;
+    V.scaled[j] = flip ? Quadratic<Exact>{-a, -b} : Quadratic<Exact>{a, b};
+  }
+  return V;
+}
+
+}  // namespace apollonius

@@ -1,0 +1,88 @@
+// A vertex held symbolically (SPEC section 3): its four defining sites and which root of their quadratic,
+// never rounded coordinates. It caches an interval enclosure of X = 2 (v - p_0, r + w_0) (quadruple_line.h)
+// for the filters, and computes its exact coordinates in Q(sqrt(discriminant)) on demand.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "quadratic.h"
+#include "quadruple_line.h"
+#include "root_sign.h"
+
+namespace apollonius {
+
+// Which root: lambda = (-B + sigma sqrt(discriminant)) / A for sigma = -1 or +1; SINGLE when the
+// quadratic has one root (discriminant 0, or A = 0 and lambda = -C / 2B).
+enum class Root : signed char { MINUS = -1, SINGLE = 0, PLUS = 1 };
+
+// Four sites in ascending index order; sites[0] is the origin of the vertex algebra.
+struct Quadruple {
+  std::array<Site_index, 4> indices;
+  std::array<Site, 4> sites;
+};
+
+// The coordinates X of a vertex, scaled by a positive denominator: X_j = scaled[j] / denominator.
+// Formulas are written once against this interface (sign, +, -, * by NT).
+template <class NT>
+struct Vertex_coordinates;
+
+template <>
+struct Vertex_coordinates<Interval> {
+  using Element = Interval;
+  std::array<Interval, 4> scaled;
+  Interval denominator{1};
+  Sign sign(const Interval& e) const { return certain_sign(e); }
+};
+
+template <>
+struct Vertex_coordinates<Exact> {
+  using Element = Quadratic<Exact>;
+  std::array<Element, 4> scaled;
+  Exact denominator;   // > 0
+  Exact discriminant;  // >= 0
+  Sign sign(const Element& e) const { return sign_of_root_number(e.a, e.b, discriminant); }
+};
+
+// The root parameter lambda of the line, or nothing when that root does not exist.
+template <class NT>
+struct Line_root {
+  Root root;
+  Root_number<NT> lambda;
+};
+
+class Vertex {
+ public:
+  Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box)
+      : quadruple_(quadruple), root_(root), box_{box} {}
+  Vertex(const Quadruple& quadruple, Root root, std::shared_ptr<const Vertex_coordinates<Exact>> exact);
+
+  const Quadruple& quadruple() const { return quadruple_; }
+  const std::array<Site_index, 4>& sites() const { return quadruple_.indices; }
+  const Site& origin() const { return quadruple_.sites[0]; }
+  Root root() const { return root_; }
+
+  template <class NT>
+  const Vertex_coordinates<NT>& coordinates() const;
+
+  // Interval enclosure of the vertex centre (x, y, z) and r.
+  std::array<Interval, 4> point_interval() const;
+
+ private:
+  Quadruple quadruple_;
+  Root root_;
+  Vertex_coordinates<Interval> box_;
+  mutable std::shared_ptr<const Vertex_coordinates<Exact>> exact_;  // computed on first use
+};
+
+template <>
+inline const Vertex_coordinates<Interval>& Vertex::coordinates<Interval>() const {
+  return box_;
+}
+template <>
+const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const;
+
+// The exact centre and r of the vertex: x, y, z, r, each (a + b sqrt d) / denominator.
+std::array<Root_number<Exact>, 4> exact_point(const Vertex& v);
+
+}  // namespace apollonius

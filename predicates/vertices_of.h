@@ -1,0 +1,60 @@
+// Predicate vertices_of(quadruple): the 0, 1 or 2 points equidistant to four sites with a valid r
+// (r + w_m >= 0 for each of the four), i.e. the candidate Apollonius vertices of the quadruple (paper
+// Theorem 4, without its non-coplanarity assumption).
+#pragma once
+
+#include <vector>
+
+#include "filtered_predicate.h"
+#include "line_roots.h"
+
+namespace apollonius {
+
+// Invariant: vertices is empty when rank_deficient or equidistant_curve.
+struct Quadruple_vertices {
+  bool rank_deficient = false;     // rank M < 3: the equidistant set is not discrete
+  bool equidistant_curve = false;  // rank 3, but the whole line lies on the cone (a ray of ties)
+  std::vector<Vertex> vertices;
+};
+
+// X gives r + w_m >= 0 for m = 0..3: X_3 + 2 b_m >= 0 with b_0 = 0.
+template <class NT>
+bool is_valid_root(const Vertex_coordinates<NT>& X, const Quadruple& q) {
+  if (X.sign(X.scaled[3]) == Sign::NEGATIVE) return false;
+  for (int m = 1; m < 4; ++m) {
+    const NT twice_b = NT(2) * (NT(q.sites[m].w) - NT(q.sites[0].w));
+    if (X.sign(X.scaled[3] + X.denominator * twice_b) == Sign::NEGATIVE) return false;
+  }
+  return true;
+}
+
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X);
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X);
+
+struct Vertices_of_predicate {
+  static constexpr const char* name = "vertices_of";
+
+  template <class NT>
+  static Quadruple_vertices evaluate(const Quadruple& q) {
+    Quadruple_vertices result;
+    const Quadruple_line<NT> line = quadruple_line<NT>(q.sites);
+    if (line.pivot < 0) {
+      result.rank_deficient = true;
+      return result;
+    }
+    const Line_roots<NT> roots = line_roots(line);
+    result.equidistant_curve = roots.whole_line_on_cone;
+    for (const Line_root<NT>& root : roots.roots) {
+      Vertex_coordinates<NT> X = coordinates_on_line(line, root.lambda);
+      if (is_valid_root(X, q)) result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
+    }
+    return result;
+  }
+};
+
+inline const Filtered_predicate<Vertices_of_predicate> vertices_of{};
+
+// The quadruple of the given sites, in ascending index order.
+Quadruple make_quadruple(std::array<Site_index, 4> indices, const std::vector<Site>& sites);
+
+}  // namespace apollonius

@@ -1,0 +1,135 @@
+#include "cli/cli.h"
+
+#include <functional>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "brute_force_diagram.h"
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+#include "io/read_sites.h"
+#include "io/write_vertices.h"
+#include "predicate_counter.h"
+
+namespace apollonius {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: apollonius3d vertices INPUT [-o OUT] [--format text|json] [--algorithm brute] [--stats]\n"
+    "                             [--keep-hydrogens] [--keep-waters]\n"
+    "  INPUT: balls text 'x y z w', vdrc .txt, PDB/mmCIF (optionally .gz), or - for stdin\n"
+    "  Prints every vertex of the Apollonius diagram: its tie-set site indices (0-based), then x y z r.\n"
+    "exit codes: 0 ok, 2 usage or input error, 3 internal error\n";
+
+struct Usage_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Vertices_command {
+  std::string input;
+  std::string output;  // empty: standard output
+  std::string format = "text";
+  bool format_given = false;
+  bool stats = false;
+  Read_options read_options;
+};
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Vertices_command parse_vertices(const std::vector<std::string>& args) {
+  Vertices_command command;
+  auto value_of = [&](std::size_t& i) -> const std::string& {
+    if (i + 1 >= args.size()) throw Usage_error("option " + args[i] + " needs a value");
+    return args[++i];
+  };
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "-o" || a == "--output") {
+      command.output = value_of(i);
+    } else if (a == "--format") {
+      command.format = value_of(i);
+      command.format_given = true;
+      if (command.format != "text" && command.format != "json")
+        throw Usage_error("unknown format '" + command.format + "' (text or json)");
+    } else if (a == "--algorithm") {
+      const std::string& algorithm = value_of(i);
+      if (algorithm != "brute") throw Usage_error("unknown algorithm '" + algorithm + "' (brute)");
+    } else if (a == "--stats") {
+      command.stats = true;
+    } else if (a == "--keep-hydrogens") {
+      command.read_options.keep_hydrogens = true;
+    } else if (a == "--keep-waters") {
+      command.read_options.keep_waters = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      throw Usage_error("unknown option '" + a + "'");
+    } else if (command.input.empty()) {
+      command.input = a;
+    } else {
+      throw Usage_error("unexpected argument '" + a + "'");
+    }
+  }
+  if (command.input.empty()) throw Usage_error("missing INPUT");
+  if (!command.format_given && ends_with(command.output, ".json")) command.format = "json";
+  return command;
+}
+
+void print_statistics(std::ostream& err, const std::vector<Predicate_statistics>& stats) {
+  err << "predicate evaluations exact_stages\n";
+  for (const Predicate_statistics& s : stats) err << s.name << ' ' << s.evaluations << ' ' << s.exact_stages << '\n';
+}
+
+int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Vertices_command command = parse_vertices(args);
+  const Site_input input = read_sites(command.input, command.read_options);
+  reset_predicate_statistics();
+  const Diagram diagram = brute_force_diagram(input.sites);
+  const std::vector<Predicate_statistics> stats = predicate_statistics();
+
+  const std::function<void(std::ostream&)> write = [&](std::ostream& o) {
+    if (command.format == "json")
+      write_vertices_json(o, diagram, command.stats ? &stats : nullptr);
+    else
+      write_vertices_text(o, diagram);
+  };
+  if (command.output.empty()) {
+    std::ostringstream buffer;  // nothing reaches stdout unless all of it is ready
+    write(buffer);
+    out << buffer.str() << std::flush;
+  } else {
+    try {
+      write_file_atomically(command.output, write);
+    } catch (const std::runtime_error& e) {
+      throw Usage_error(e.what());
+    }
+  }
+  if (command.stats) print_statistics(err, stats);
+  return EXIT_OK;
+}
+
+}  // namespace
+
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  try {
+    if (args.empty()) throw Usage_error("missing command");
+    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+      out << kUsage;
+      return EXIT_OK;
+    }
+    if (args[0] == "vertices") return run_vertices(args, out, err);
+    throw Usage_error("unknown command '" + args[0] + "'");
+  } catch (const Usage_error& e) {
+    err << "apollonius3d: " << e.what() << '\n' << kUsage;
+    return EXIT_BAD_INPUT;
+  } catch (const Input_error& e) {
+    err << "apollonius3d: " << e.what() << '\n';
+    return EXIT_BAD_INPUT;
+  } catch (const std::exception& e) {
+    err << "apollonius3d: internal error: " << e.what() << '\n';
+    return EXIT_INTERNAL_ERROR;
+  }
+}
+
+}  // namespace apollonius

@@ -1,0 +1,38 @@
+#include "diagram.h"
+
+#include <algorithm>
+
+#include "compare_vertices.h"
+#include "correct_rounding.h"
+
+namespace apollonius {
+
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
+                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices) {
+  Diagram diagram;
+  diagram.site_count = site_count;
+  diagram.hidden = std::move(hidden);
+  diagram.vertices.reserve(vertices.size());
+  for (auto& [tie_set, vertex] : vertices) {
+    const auto exact = exact_point(vertex);
+    const std::array<double, 4> rounded = {to_nearest_double(exact[0]), to_nearest_double(exact[1]),
+                                           to_nearest_double(exact[2]), to_nearest_double(exact[3])};
+    diagram.vertices.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
+  }
+  // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.
+  std::sort(diagram.vertices.begin(), diagram.vertices.end(), [](const Diagram_vertex& u, const Diagram_vertex& v) {
+    if (u.tie_set != v.tie_set) return u.tie_set < v.tie_set;
+    if (u.rounded != v.rounded) return u.rounded < v.rounded;
+    return compare_vertices(u.vertex, v.vertex) == Sign::NEGATIVE;
+  });
+
+  std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);
+  for (const Diagram_vertex& v : diagram.vertices)
+    for (Site_index s : v.tie_set) has_vertex[s] = true;
+  for (const Hidden_site& h : diagram.hidden) is_hidden_site[h.site] = true;
+  for (Site_index s = 0; s < site_count; ++s)
+    if (!has_vertex[s] && !is_hidden_site[s]) diagram.sites_without_vertex.push_back(s);
+  return diagram;
+}
+
+}  // namespace apollonius

@@ -1,0 +1,41 @@
+// The vertex set of an Apollonius diagram, as every algorithm reports it and every writer prints it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "site.h"
+#include "vertex.h"
+
+namespace apollonius {
+
+// Invariant: tie_set is ascending, has 4 or more sites, and contains vertex.sites().
+struct Diagram_vertex {
+  std::vector<Site_index> tie_set;  // every site at the minimum weighted distance
+  Vertex vertex;                    // one defining quadruple of the tie set, and its root
+  std::array<double, 4> rounded;    // x, y, z, r: the correctly rounded doubles, for output only
+};
+
+// A site whose cell has no interior: inside (or tangent inside) the ball of hidden_by, or an exact
+// duplicate of the earlier site hidden_by.
+struct Hidden_site {
+  Site_index site;
+  Site_index hidden_by;
+  bool duplicate;
+};
+
+// Invariants: vertices sorted by tie set, then by printed x, y, z, r, then exactly; each point once;
+// hidden ascending by site; sites_without_vertex ascending, disjoint from hidden.
+struct Diagram {
+  std::size_t site_count = 0;
+  std::vector<Diagram_vertex> vertices;
+  std::vector<Hidden_site> hidden;
+  std::vector<Site_index> sites_without_vertex;
+};
+
+// Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
+                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices);
+
+}  // namespace apollonius

@@ -1,0 +1,153 @@
+#include "site_generators.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace apollonius {
+namespace {
+
+// SplitMix64: fixed, portable output, unlike the std distributions.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  // Uniform integer in [low, high].
+  long integer(long low, long high) { return low + static_cast<long>(next() % static_cast<std::uint64_t>(high - low + 1)); }
+  // A multiple of 1/8 in [low, high].
+  double eighths(long low, long high) { return static_cast<double>(integer(8 * low, 8 * high)) / 8.0; }
+
+ private:
+  std::uint64_t state_;
+};
+
+const Site_family kFamilies[] = {Site_family::uniform,  Site_family::equal_weights, Site_family::lattice,
+                                 Site_family::coplanar, Site_family::collinear,     Site_family::nested,
+                                 Site_family::tangent,  Site_family::mixed_sign,    Site_family::duplicates,
+                                 Site_family::cospherical};
+
+Site random_site(Random& random, long extent, double min_weight, double max_weight) {
+  return {random.eighths(-extent, extent), random.eighths(-extent, extent), random.eighths(-extent, extent),
+          static_cast<double>(random.integer(static_cast<long>(8 * min_weight), static_cast<long>(8 * max_weight))) / 8.0};
+}
+
+}  // namespace
+
+const char* name_of(Site_family family) {
+  switch (family) {
+    case Site_family::uniform: return "uniform";
+    case Site_family::equal_weights: return "equal-weights";
+    case Site_family::lattice: return "lattice";
+    case Site_family::coplanar: return "coplanar";
+    case Site_family::collinear: return "collinear";
+    case Site_family::nested: return "nested";
+    case Site_family::tangent: return "tangent";
+    case Site_family::mixed_sign: return "mixed-sign";
+    case Site_family::duplicates: return "duplicates";
+    case Site_family::cospherical: return "cospherical";
+  }
+  throw std::invalid_argument("unknown site family");
+}
+
+const std::vector<std::string>& site_family_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (Site_family f : kFamilies) v.push_back(name_of(f));
+    return v;
+  }();
+  return names;
+}
+
+Site_family site_family_from_name(const std::string& name) {
+  for (Site_family f : kFamilies)
+    if (name == name_of(f)) return f;
+  throw std::invalid_argument("unknown site family '" + name + "'");
+}
+
+std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_t seed) {
+  Random random(seed * 0x2545F4914F6CDD1Dull + static_cast<std::uint64_t>(family));
+  std::vector<Site> sites;
+  sites.reserve(n);
+  while (sites.size() < n) {
+    switch (family) {
+      case Site_family::uniform: sites.push_back(random_site(random, 10, 0.5, 3)); break;
+      case Site_family::equal_weights: {
+        Site s = random_site(random, 10, 1, 1);
+        sites.push_back(s);
+        break;
+      }
+      case Site_family::lattice: {
+        long side = 1;  // at least twice as many lattice points as sites, so that the loop ends quickly
+        while ((side + 1) * (side + 1) * (side + 1) < 2 * static_cast<long>(n)) ++side;
+        sites.push_back({4.0 * random.integer(0, side), 4.0 * random.integer(0, side), 4.0 * random.integer(0, side),
+                         random.integer(0, 1) ? 1.0 : 1.5});
+        // Lattice points repeat; a repeat is a duplicate site, which the duplicates family covers.
+        if (std::count(sites.begin(), sites.end() - 1, sites.back()) > 0) sites.pop_back();
+        break;
+      }
+      case Site_family::coplanar: {
+        Site s = random_site(random, 10, 0.5, 3);
+        s.z = 0;
+        sites.push_back(s);
+        break;
+      }
+      case Site_family::collinear: {
+        // Points on one of three axis-parallel lines through random integer points.
+        const long line = random.integer(0, 2);
+        const double t = random.eighths(-10, 10);
+        const double offset[3][3] = {{0, 1, -2}, {3, 0, 1}, {-1, 2, 0}};
+        Site s{offset[line][0], offset[line][1], offset[line][2], static_cast<double>(random.integer(1, 8)) / 4.0};
+        (line == 0 ? s.x : line == 1 ? s.y : s.z) += t;
+        sites.push_back(s);
+        break;
+      }
+      case Site_family::nested: {
+        if (!sites.empty() && random.integer(0, 2) == 0) {
+          // A ball inside (sometimes tangent inside) an earlier one: centre offset 1/8 along x.
+          const Site& outer = sites[static_cast<std::size_t>(random.integer(0, static_cast<long>(sites.size()) - 1))];
+          const double w = outer.w - 0.125 * static_cast<double>(random.integer(1, 2));
+          sites.push_back({outer.x + 0.125, outer.y, outer.z, w});
+        } else {
+          sites.push_back(random_site(random, 10, 1, 3));
+        }
+        break;
+      }
+      case Site_family::tangent: {
+        // Externally tangent pairs along an axis: |x_i - x_j| = w_i + w_j.
+        Site s = random_site(random, 10, 1, 2);
+        sites.push_back(s);
+        if (sites.size() < n) sites.push_back({s.x + s.w + 1.5, s.y, s.z, 1.5});
+        break;
+      }
+      case Site_family::mixed_sign: sites.push_back(random_site(random, 10, -2, 2)); break;
+      case Site_family::duplicates: {
+        if (!sites.empty() && random.integer(0, 3) == 0)
+          sites.push_back(sites[static_cast<std::size_t>(random.integer(0, static_cast<long>(sites.size()) - 1))]);
+        else
+          sites.push_back(random_site(random, 10, 0.5, 3));
+        break;
+      }
+      case Site_family::cospherical: {
+        // Balls tangent to the sphere of radius 2 about the origin from outside: centre on an axis at
+        // distance c, weight c - 2.
+        const long axis = random.integer(0, 5);
+        const double c = static_cast<double>(random.integer(20, 80)) / 8.0;
+        Site s{0, 0, 0, c - 2};
+        const double sign = axis % 2 ? -1.0 : 1.0;
+        (axis / 2 == 0 ? s.x : axis / 2 == 1 ? s.y : s.z) = sign * c;
+        if (std::none_of(sites.begin(), sites.end(), [&](const Site& t) { return t.x == s.x && t.y == s.y && t.z == s.z; }))
+          sites.push_back(s);
+        else
+          sites.push_back(random_site(random, 10, 0.5, 1));
+        break;
+      }
+    }
+  }
+  return sites;
+}
+
+}  // namespace apollonius
