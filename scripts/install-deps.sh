@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
-  doctest-dev gemmi-dev zlib1g-dev libtbb-dev
+  doctest-dev gemmi-dev tao-pegtl-dev zlib1g-dev libtbb-dev
   voronota time
 )
 missing=()

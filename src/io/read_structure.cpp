@@ -1,0 +1,140 @@
+#include "io/read_structure.h"
+
+#include <map>
+#include <regex>
+#include <stdexcept>
+
+#include <gemmi/gz.hpp>
+#include <gemmi/mmread.hpp>
+
+#include "io/input_error.h"
+
+namespace apollonius {
+
+namespace {
+
+// Van der Waals radii in Angstrom, from A. Bondi (1964), "van der Waals Volumes and Radii",
+// J. Phys. Chem. 68:441. C, N, O and S agree with the defaults of `voronota get-balls-from-atoms-file`.
+//
+//   element   radius
+//   H, D      1.20
+//   C         1.70
+//   N         1.55
+//   O         1.52
+//   F         1.47
+//   P         1.80
+//   S         1.80
+//   Cl        1.75
+//   Br        1.85
+//   I         1.98
+//   Se        1.90
+//   other     1.80   (default for every element not listed, and for an unknown element)
+double van_der_waals_radius(gemmi::El element) {
+  switch (element) {
+    case gemmi::El::H:
+    case gemmi::El::D: return 1.20;
+    case gemmi::El::C: return 1.70;
+    case gemmi::El::N: return 1.55;
+    case gemmi::El::O: return 1.52;
+    case gemmi::El::F: return 1.47;
+    case gemmi::El::P: return 1.80;
+    case gemmi::El::S: return 1.80;
+    case gemmi::El::Cl: return 1.75;
+    case gemmi::El::Br: return 1.85;
+    case gemmi::El::I: return 1.98;
+    case gemmi::El::Se: return 1.90;
+    default: return 1.80;
+  }
+}
+
+bool is_water(const std::string& residue_name) {
+  return residue_name == "HOH" || residue_name == "WAT" || residue_name == "DOD" || residue_name == "H2O";
+}
+
+// The sites of one model, in file order. Of the alternate locations of an atom only the first one seen
+// is kept, so that each atom is one ball (one conformer); atoms without an altloc are always kept.
+std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options) {
+  std::vector<Site> sites;
+  std::map<std::string, char> first_altloc;  // keyed by chain, residue number and atom name
+  for (const gemmi::Chain& chain : model.chains) {
+    for (const gemmi::Residue& residue : chain.residues) {
+      if (!options.keep_waters && is_water(residue.name)) continue;
+      for (const gemmi::Atom& atom : residue.atoms) {
+        if (!options.keep_hydrogens && atom.is_hydrogen()) continue;
+        if (atom.has_altloc()) {
+          const std::string key = chain.name + ' ' + residue.seqid.str() + ' ' + atom.name;
+          if (first_altloc.emplace(key, atom.altloc).first->second != atom.altloc) continue;
+        }
+        sites.push_back({atom.pos.x, atom.pos.y, atom.pos.z, van_der_waals_radius(atom.element.elem)});
+      }
+    }
+  }
+  return sites;
+}
+
+// gemmi reports errors as std::runtime_error, with the line either as "Problem in line N: REASON" (PDB)
+// or as "NAME:LINE:COLUMN: REASON" (CIF). This recovers the line and the reason, on one line.
+Input_error input_error_from_gemmi(const std::string& name, const std::string& message) {
+  static const std::regex pdb_location(R"(Problem in line (\d+): *([\s\S]*))");
+  static const std::regex cif_location(R"((\d+):\d+: *([\s\S]*))");
+  const std::string name_prefix = name + ":";
+  const std::string after_name =
+      message.compare(0, name_prefix.size(), name_prefix) == 0 ? message.substr(name_prefix.size()) : "";
+  std::size_t line = 0;
+  std::string reason = message;
+  std::smatch match;
+  if (std::regex_match(message, match, pdb_location) || std::regex_match(after_name, match, cif_location)) {
+    line = std::stoul(match[1]);
+    reason = match[2];
+  }
+  for (char& c : reason) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  reason.erase(reason.find_last_not_of(' ') + 1);
+  return Input_error(name, line, reason);
+}
+
+// Columns 79-80 of PDB atom records hold the formal charge, which no radius needs; old files such as
+// 1hpv.pdb have sequence numbers there, on which gemmi fails ("Wrong format for charge").
+gemmi::PdbReadOptions pdb_read_options() {
+  gemmi::PdbReadOptions options;
+  options.max_line_length = 78;
+  return options;
+}
+
+gemmi::Structure parse_structure(const std::string& path_or_name, const std::string* content) {
+  if (content == nullptr) {
+    gemmi::MaybeGzipped input(path_or_name);
+    if (gemmi::coor_format_from_ext(input.basepath()) == gemmi::CoorFormat::Mmcif) {
+      return gemmi::make_structure(gemmi::cif::read(input));
+    }
+    return gemmi::read_pdb(input, pdb_read_options());
+  }
+  // gemmi's own test: mmCIF if the first line that is not blank nor a '#' comment starts with "data_".
+  const char* const begin = content->data();
+  if (gemmi::coor_format_from_content(begin, begin + content->size()) == gemmi::CoorFormat::Mmcif) {
+    return gemmi::make_structure(gemmi::cif::read_memory(content->data(), content->size(), path_or_name.c_str()));
+  }
+  return gemmi::read_pdb_string(*content, path_or_name, pdb_read_options());
+}
+
+}  // namespace
+
+std::vector<Site> read_structure(const std::string& path_or_name, const std::string* content,
+                                 const Read_options& options) {
+  gemmi::Structure structure;
+  try {
+    structure = parse_structure(path_or_name, content);
+  } catch (const std::runtime_error& e) {
+    throw input_error_from_gemmi(path_or_name, e.what());
+  } catch (const std::logic_error& e) {
+    // gemmi lets std::stoi and friends fail on malformed numbers: bad input too, not a bug here.
+    throw input_error_from_gemmi(path_or_name, e.what());
+  }
+  std::vector<Site> sites;
+  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options);
+  if (sites.empty()) throw Input_error(path_or_name, 0, "no atoms");
+  return sites;
+}
+
+}  // namespace apollonius

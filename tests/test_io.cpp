@@ -1,0 +1,357 @@
+// Reading sites (balls, vdrc, PDB, mmCIF), bad input, atomic output files, and the vertex writers.
+#include <doctest/doctest.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+#include "io/read_sites.h"
+#include "io/read_structure.h"
+#include "io/write_vertices.h"
+#include "vertices_of.h"
+
+namespace fs = std::filesystem;
+using namespace apollonius;
+
+namespace {
+
+// A fresh directory for one test, removed with everything in it at the end of the test.
+class Temporary_directory {
+ public:
+  Temporary_directory() {
+    static std::atomic<int> counter{0};
+    path_ = fs::temp_directory_path() /
+            ("apollonius_test_io_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::create_directories(path_);
+  }
+  Temporary_directory(const Temporary_directory&) = delete;
+  Temporary_directory& operator=(const Temporary_directory&) = delete;
+  ~Temporary_directory() { fs::remove_all(path_); }
+
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  std::string write(const std::string& name, const std::string& content) const {
+    std::ofstream(file(name), std::ios::binary) << content;
+    return file(name);
+  }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(path_)) names.push_back(entry.path().filename().string());
+    return names;
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string file_content(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_gzip(const std::string& path, const std::string& content) {
+  gzFile file = gzopen(path.c_str(), "wb");
+  REQUIRE(file != nullptr);
+  REQUIRE(gzwrite(file, content.data(), static_cast<unsigned>(content.size())) == static_cast<int>(content.size()));
+  REQUIRE(gzclose(file) == Z_OK);
+}
+
+const Read_options default_options;
+
+Site_input read_text(const std::string& content, const Read_options& options = default_options) {
+  return read_sites_from_text(content, "input.txt", options);
+}
+
+// Runs read and checks that it throws an Input_error with this file, line and a reason containing reason_part.
+template <class Read>
+void check_input_error(const Read& read, const std::string& file, std::size_t line, const std::string& reason_part) {
+  try {
+    read();
+    FAIL("no Input_error; expected " << file << ":" << line << ": ..." << reason_part);
+  } catch (const Input_error& e) {
+    CHECK(e.file() == file);
+    CHECK(e.line() == line);
+    CHECK_MESSAGE(e.reason().find(reason_part) != std::string::npos, e.what());
+  }
+}
+
+void check_text_error(const std::string& content, std::size_t line, const std::string& reason_part) {
+  check_input_error([&] { read_text(content); }, "input.txt", line, reason_part);
+}
+
+// Residue 1 (ALA) with a hydrogen, atom CB in two alternate locations, a ligand, and a water.
+const char* const small_pdb =
+    "HEADER    TEST\n"
+    "ATOM      1  N   ALA A   1       1.000   2.000   3.000  1.00  0.00           N\n"
+    "ATOM      2  CA  ALA A   1       2.000   2.000   3.000  1.00  0.00           C\n"
+    "ATOM      3  CB AALA A   1       3.000   2.000   3.000  0.50  0.00           C\n"
+    "ATOM      4  CB BALA A   1       3.500   2.000   3.000  0.50  0.00           C\n"
+    "ATOM      5  H   ALA A   1       0.500   2.000   3.000  1.00  0.00           H\n"
+    "HETATM    6 SE   SE  A 101       5.000   5.000   5.000  1.00  0.00          SE\n"
+    "HETATM    7  O   HOH A 201       9.000   9.000   9.000  1.00  0.00           O\n"
+    "END\n";
+
+// The first two atoms of pept.pdb as a minimal mmCIF.
+const char* const small_mmcif =
+    "data_small\n"
+    "#\n"
+    "loop_\n"
+    "_atom_site.group_PDB\n"
+    "_atom_site.id\n"
+    "_atom_site.type_symbol\n"
+    "_atom_site.label_atom_id\n"
+    "_atom_site.label_alt_id\n"
+    "_atom_site.label_comp_id\n"
+    "_atom_site.label_asym_id\n"
+    "_atom_site.label_entity_id\n"
+    "_atom_site.label_seq_id\n"
+    "_atom_site.Cartn_x\n"
+    "_atom_site.Cartn_y\n"
+    "_atom_site.Cartn_z\n"
+    "_atom_site.occupancy\n"
+    "_atom_site.B_iso_or_equiv\n"
+    "_atom_site.auth_seq_id\n"
+    "_atom_site.auth_asym_id\n"
+    "_atom_site.pdbx_PDB_model_num\n"
+    "ATOM 1 N N  . ASP A 1 1 4.868 -17.809 25.188 1.00 34.37 1 E 1\n"
+    "ATOM 2 C CA . ASP A 1 1 3.984 -16.723 25.698 1.00 33.85 1 E 1\n"
+    "#\n";
+
+const Site pept_first{4.868, -17.809, 25.188, 1.55};
+const Site pept_second{3.984, -16.723, 25.698, 1.70};
+
+}  // namespace
+
+TEST_CASE("Input_error names the file, the line if any, and the reason") {
+  CHECK(std::string(Input_error("a.txt", 3, "bad").what()) == "a.txt:3: bad");
+  CHECK(std::string(Input_error("a.txt", 0, "empty").what()) == "a.txt: empty");
+}
+
+TEST_CASE("balls text: comments, blank lines, CRLF, Voronota annotations") {
+  const Site_input input = read_text(
+      "# x y z r\r\n"
+      "\r\n"
+      "4.868 -17.809 25.188 1.55 # 1 E 1 ASP N . .\r\n"
+      "   # indented comment\r\n"
+      "\t-1.5\t2e1  +3 0.1");
+  CHECK(input.format == Input_format::balls);
+  REQUIRE(input.sites.size() == 2);
+  CHECK(input.sites[0] == pept_first);
+  CHECK(input.sites[1] == Site{-1.5, 20, 3, 0.1});  // each field the nearest double to its text
+}
+
+TEST_CASE("vdrc: count line, then id x y z r; ids ignored, file order kept") {
+  const Site_input input = read_sites(APOLLONIUS_SHARED_DATA "/vdrc/ANO3_3CONNECT.txt", default_options);
+  CHECK(input.format == Input_format::vdrc);
+  REQUIRE(input.sites.size() == 9);
+  CHECK(input.sites.front() == Site{-31, 0, 0, 25});
+  CHECK(input.sites.back() == Site{0, -100, 1, 5});
+}
+
+TEST_CASE("balls and vdrc are told apart by content, whatever the extension") {
+  Temporary_directory directory;
+  const Site_input balls = read_sites(directory.write("x.txt", "1 2 3 4\n"), default_options);
+  CHECK(balls.format == Input_format::balls);
+  CHECK(balls.sites == std::vector<Site>{{1, 2, 3, 4}});
+  const Site_input vdrc = read_sites(directory.write("y.dat", "1\n7 1 2 3 4\n"), default_options);
+  CHECK(vdrc.format == Input_format::vdrc);
+  CHECK(vdrc.sites == std::vector<Site>{{1, 2, 3, 4}});
+  const Site_input pdb = read_sites(directory.write("z.txt", small_pdb), default_options);
+  CHECK(pdb.format == Input_format::structure);
+  CHECK(pdb.sites.size() == 4);
+}
+
+TEST_CASE("pept.pdb: 107 atoms with Bondi radii") {
+  const Site_input input = read_sites(APOLLONIUS_EXAMPLES "/pept.pdb", default_options);
+  CHECK(input.format == Input_format::structure);
+  REQUIRE(input.sites.size() == 107);
+  CHECK(input.sites[0] == pept_first);
+  CHECK(input.sites[1] == pept_second);
+}
+
+TEST_CASE("a gzipped PDB file reads the same as the plain one") {
+  Temporary_directory directory;
+  const std::string gzipped = directory.file("pept.PDB.GZ");
+  write_gzip(gzipped, file_content(APOLLONIUS_EXAMPLES "/pept.pdb"));
+  CHECK(read_sites(gzipped, default_options).sites ==
+        read_sites(APOLLONIUS_EXAMPLES "/pept.pdb", default_options).sites);
+}
+
+TEST_CASE("mmCIF, from a file, from a gzipped file and by content") {
+  Temporary_directory directory;
+  const std::vector<Site> expected{pept_first, pept_second};
+  CHECK(read_sites(directory.write("small.cif", small_mmcif), default_options).sites == expected);
+  write_gzip(directory.file("small.mmcif.gz"), small_mmcif);
+  CHECK(read_sites(directory.file("small.mmcif.gz"), default_options).sites == expected);
+  const Site_input by_content = read_text(small_mmcif);
+  CHECK(by_content.format == Input_format::structure);
+  CHECK(by_content.sites == expected);
+}
+
+TEST_CASE("structures: hydrogens and waters left out unless kept; one conformer; ligands kept") {
+  const Site n{1, 2, 3, 1.55}, ca{2, 2, 3, 1.70}, cb{3, 2, 3, 1.70}, h{0.5, 2, 3, 1.20};
+  const Site selenium{5, 5, 5, 1.90}, water{9, 9, 9, 1.52};
+  CHECK(read_text(small_pdb).sites == std::vector<Site>{n, ca, cb, selenium});
+  Read_options options;
+  options.keep_hydrogens = true;
+  CHECK(read_text(small_pdb, options).sites == std::vector<Site>{n, ca, cb, h, selenium});
+  options.keep_waters = true;
+  CHECK(read_text(small_pdb, options).sites == std::vector<Site>{n, ca, cb, h, selenium, water});
+  options.keep_hydrogens = false;
+  CHECK(read_text(small_pdb, options).sites == std::vector<Site>{n, ca, cb, selenium, water});
+}
+
+TEST_CASE("standard input is read for \"-\" and named <stdin>") {
+  std::istringstream fake_stdin("1 2 3 4\n0 0 0\n");
+  struct Restore_stdin {
+    std::streambuf* real;
+    ~Restore_stdin() { std::cin.rdbuf(real); }
+  } restore{std::cin.rdbuf(fake_stdin.rdbuf())};
+  check_input_error([] { read_sites("-", default_options); }, "<stdin>", 2, "expected 4 fields");
+}
+
+TEST_CASE("bad numbers") {
+  check_text_error("1 2 nan 4\n", 1, "not a finite number: 'nan'");
+  check_text_error("1 2 3 4\n1 2 3 -inf\n", 2, "not a finite number: '-inf'");
+  check_text_error("1 2 3 4\n1 2 3 1e400\n", 2, "out of double range: '1e400'");
+  check_text_error("1 2 3 4\n1 2 three 4\n", 2, "not a number: 'three'");
+  check_text_error("1 2 3 4\n1.5x 2 3 4\n", 2, "not a number: '1.5x'");
+  check_text_error("1 2 3 4\n1 2 3 4,\n", 2, "not a number: '4,'");
+}
+
+TEST_CASE("bad field counts") {
+  check_text_error("1 2 3\n", 1, "expected 4 fields 'x y z w', found 3");
+  check_text_error("1 2 3 4\n\n1 2 3 4 5\n", 3, "expected 4 fields 'x y z w', found 5");
+  check_text_error("2\n1 0 0 0 1\n2 0 0 1\n", 3, "expected 5 fields 'id x y z r', found 4");
+}
+
+TEST_CASE("vdrc count mismatch") {
+  check_text_error("3\n1 0 0 0 1\n2 1 0 0 1\n", 3, "expected 3 balls, found 2");
+  check_text_error("1\n1 0 0 0 1\n2 1 0 0 1\n", 3, "expected 1 balls, found more");
+  check_text_error("0\n", 0, "empty input: no sites");
+  check_text_error("1\nA 0 0 0 1\n", 2, "not an integer id: 'A'");
+}
+
+TEST_CASE("unrecognized, empty and binary input") {
+  check_text_error("hello world\n", 1, "unrecognized input format");
+  check_text_error("", 0, "empty input: no sites");
+  check_text_error("# only\n   # comments\n\n", 0, "empty input: no sites");
+  check_text_error(std::string("1 2 3 4\n\0\0\x01 junk", 16), 2, "binary data (byte 0x00)");
+}
+
+TEST_CASE("missing, unreadable and empty files") {
+  Temporary_directory directory;
+  const std::string missing = directory.file("missing.txt");
+  check_input_error([&] { read_sites(missing, default_options); }, missing, 0, "cannot open: No such file");
+  const std::string missing_pdb = directory.file("missing.pdb.gz");
+  check_input_error([&] { read_sites(missing_pdb, default_options); }, missing_pdb, 0, "cannot open: No such file");
+  const std::string folder = directory.file("folder.pdb");
+  fs::create_directory(folder);
+  check_input_error([&] { read_sites(folder, default_options); }, folder, 0, "cannot open: Is a directory");
+  const std::string empty = directory.write("empty.txt", "");
+  check_input_error([&] { read_sites(empty, default_options); }, empty, 0, "empty input: no sites");
+}
+
+TEST_CASE("structures without atoms, and malformed structures") {
+  Temporary_directory directory;
+  const std::string no_atoms = directory.write("no_atoms.pdb", "HEADER    EMPTY\nEND\n");
+  check_input_error([&] { read_sites(no_atoms, default_options); }, no_atoms, 0, "no atoms");
+  check_text_error("HEADER    EMPTY\nEND\n", 0, "no atoms");
+  check_text_error("data_empty\n_cell.length_a 10\n", 0, "no atoms");
+  check_text_error("HEADER    SHORT\nATOM      1  N   A\n", 2, "too short");
+  check_text_error("data_broken\n_cell.length_a 10\n'unterminated\n", 3, "parse error");
+}
+
+TEST_CASE("atomic writes: content appears whole, or not at all") {
+  Temporary_directory directory;
+  const std::string path = directory.file("out.txt");
+  write_file_atomically(path, [](std::ostream& out) { out << "first\n"; });
+  CHECK(file_content(path) == "first\n");
+  write_file_atomically(path, [](std::ostream& out) { out << "second\n"; });
+  CHECK(file_content(path) == "second\n");
+
+  const auto failing_writer = [](std::ostream& out) {
+    out << std::string(1 << 20, 'x');  // more than one buffer: part of it reached the temporary file
+    throw std::runtime_error("writer failed");
+  };
+  CHECK_THROWS_WITH(write_file_atomically(path, failing_writer), "writer failed");
+  CHECK(file_content(path) == "second\n");
+  CHECK(directory.entries() == std::vector<std::string>{"out.txt"});
+
+  const std::string fresh = directory.file("fresh.txt");
+  CHECK_THROWS_WITH(write_file_atomically(fresh, failing_writer), "writer failed");
+  CHECK(directory.entries() == std::vector<std::string>{"out.txt"});
+
+  const std::string unreachable = directory.file("no_such_directory/out.txt");
+  CHECK_THROWS_WITH(write_file_atomically(unreachable, [](std::ostream& out) { out << "x"; }),
+                    ("cannot write " + unreachable + ": No such file or directory").c_str());
+}
+
+TEST_CASE("vertex writers: text and JSON") {
+  // Four unit balls on a regular tetrahedron: one vertex, the centre, at distance sqrt(3) - 1.
+  const std::vector<Site> sites{{1, 1, 1, 1}, {1, -1, -1, 1}, {-1, 1, -1, 1}, {-1, -1, 1, 1}};
+  const Quadruple_vertices found = vertices_of(make_quadruple({0, 1, 2, 3}, sites));
+  REQUIRE(found.vertices.size() == 1);
+  Diagram diagram;
+  diagram.site_count = 6;
+  // sqrt(3) - 1 to 38 digits, so that the literal is its correctly rounded double (std::sqrt(3.0) - 1 is not).
+  const double r = 0.73205080756887729352744634150587236694;
+  diagram.vertices.push_back({{0, 1, 2, 3}, found.vertices[0], {0, 0, 0, r}});
+  diagram.hidden.push_back({4, 0, true});
+  diagram.sites_without_vertex.push_back(5);
+
+  std::ostringstream text;
+  write_vertices_text(text, diagram);
+  CHECK(text.str() == "0 1 2 3 0 0 0 0.7320508075688773\n");
+
+  std::ostringstream json;
+  write_vertices_json(json, diagram, nullptr);
+  CHECK(json.str() ==
+        "{\n"
+        "  \"format\": \"apollonius3d-vertices\",\n"
+        "  \"version\": 1,\n"
+        "  \"sites\": 6,\n"
+        "  \"vertices\": [\n"
+        "    {\"sites\": [0, 1, 2, 3], \"x\": 0, \"y\": 0, \"z\": 0, \"r\": 0.7320508075688773}\n"
+        "  ],\n"
+        "  \"hidden_sites\": [\n"
+        "    {\"site\": 4, \"hidden_by\": 0, \"duplicate\": true}\n"
+        "  ],\n"
+        "  \"sites_without_vertex\": [5]\n"
+        "}\n");
+
+  const std::vector<Predicate_statistics> stats{{"vertices_of", 10, 2}, {"say \"hi\"", 0, 0}};
+  std::ostringstream with_stats;
+  write_vertices_json(with_stats, diagram, &stats);
+  CHECK(with_stats.str().find("\"stats\": {\"predicates\": [\n"
+                              "    {\"name\": \"vertices_of\", \"evaluations\": 10, \"exact_stages\": 2},\n"
+                              "    {\"name\": \"say \\\"hi\\\"\", \"evaluations\": 0, \"exact_stages\": 0}\n"
+                              "  ]}\n}\n") != std::string::npos);
+}
+
+TEST_CASE("vertex writers: non-finite values and empty lists") {
+  const std::vector<Site> sites{{1, 1, 1, 1}, {1, -1, -1, 1}, {-1, 1, -1, 1}, {-1, -1, 1, 1}};
+  const Quadruple_vertices found = vertices_of(make_quadruple({0, 1, 2, 3}, sites));
+  REQUIRE(found.vertices.size() == 1);
+  Diagram diagram;
+  diagram.site_count = 4;
+  diagram.vertices.push_back({{0, 1, 2, 3}, found.vertices[0], {HUGE_VAL, -HUGE_VAL, 1e300, 0.1}});
+
+  std::ostringstream text;
+  write_vertices_text(text, diagram);
+  CHECK(text.str() == "0 1 2 3 inf -inf 1.0000000000000001e+300 0.10000000000000001\n");
+
+  std::ostringstream json;
+  write_vertices_json(json, diagram, nullptr);
+  CHECK(json.str().find("\"x\": \"inf\", \"y\": \"-inf\", \"z\": 1.0000000000000001e+300") != std::string::npos);
+  CHECK(json.str().find("\"hidden_sites\": [],\n  \"sites_without_vertex\": []\n}") != std::string::npos);
+}
