@@ -3,19 +3,26 @@
 // under a Rounding_guard, and again with Exact only if some interval sign was uncertain.
 #pragma once
 
+#include <utility>
+
 #include "number_types.h"
 #include "predicate_counter.h"
 #include "rounding_guard.h"
 
 namespace apollonius {
 
-// Predicate must provide `static constexpr const char* name` and `template <class NT> static R evaluate(...)`.
+// Predicate must provide `static constexpr const char* name` and `template <class NT> static R evaluate(...)`;
+// it may provide `static std::optional<R> static_filter(...)`, a cheaper first stage in plain doubles with
+// a derived error bound (ERROR_BOUNDS.md), which answers only when certain.
 template <class Predicate>
 class Filtered_predicate {
  public:
   template <class... Args>
   auto operator()(const Args&... args) const {
     counter().count_evaluation();
+    if constexpr (has_static_filter<Predicate, Args...>(0)) {
+      if (const auto certain = Predicate::static_filter(args...)) return *certain;
+    }
     {
       Rounding_guard guard;
       try {
@@ -25,6 +32,15 @@ class Filtered_predicate {
     }
     counter().count_exact_stage();
     return Predicate::template evaluate<Exact>(args...);
+  }
+
+  template <class P, class... Args>
+  static constexpr auto has_static_filter(int) -> decltype(P::static_filter(std::declval<const Args&>()...), true) {
+    return true;
+  }
+  template <class P, class... Args>
+  static constexpr bool has_static_filter(...) {
+    return false;
   }
 
   static Predicate_counter& counter() {

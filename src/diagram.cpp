@@ -4,6 +4,7 @@
 
 #include "compare_vertices.h"
 #include "correct_rounding.h"
+#include "vertex_in_box.h"
 
 namespace apollonius {
 
@@ -33,6 +34,11 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   for (Site_index s = 0; s < site_count; ++s)
     if (!has_vertex[s] && !is_hidden_site[s]) diagram.sites_without_vertex.push_back(s);
   return diagram;
+}
+
+void restrict_to_box(Diagram& diagram, const Axis_box& box) {
+  const auto outside = [&](const Diagram_vertex& v) { return !vertex_in_box(v.vertex, box, std::array<bool, 3>{true, true, true}); };
+  diagram.vertices.erase(std::remove_if(diagram.vertices.begin(), diagram.vertices.end(), outside), diagram.vertices.end());
 }
 
 }  // namespace apollonius

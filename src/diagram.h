@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "axis_box.h"
 #include "site.h"
 #include "vertex.h"
 
@@ -33,6 +34,9 @@ struct Diagram {
   std::vector<Hidden_site> hidden;
   std::vector<Site_index> sites_without_vertex;
 };
+
+// Keeps only the vertices whose centre lies in the closed box (exact).
+void restrict_to_box(Diagram& diagram, const Axis_box& box);
 
 // Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,

@@ -1,11 +1,15 @@
 #include "cli/cli.h"
 
+#include <charconv>
+#include <cmath>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 
 #include "brute_force_diagram.h"
+#include "octree_diagram.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/read_sites.h"
@@ -16,10 +20,12 @@ namespace apollonius {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: apollonius3d vertices INPUT [-o OUT] [--format text|json] [--algorithm brute] [--stats]\n"
+    "usage: apollonius3d vertices INPUT [-o OUT] [--format text|json] [--algorithm octree|brute]\n"
+    "                             [--threads N] [--box X0 Y0 Z0 X1 Y1 Z1] [--stats]\n"
     "                             [--keep-hydrogens] [--keep-waters]\n"
     "  INPUT: balls text 'x y z w', vdrc .txt, PDB/mmCIF (optionally .gz), or - for stdin\n"
-    "  Prints every vertex of the Apollonius diagram: its tie-set site indices (0-based), then x y z r.\n"
+    "  Prints every vertex of the Apollonius diagram in R^3 (or in the closed --box): its tie-set site\n"
+    "  indices (0-based), then x y z r. --algorithm brute is the O(n^5) reference.\n"
     "exit codes: 0 ok, 2 usage or input error, 3 internal error\n";
 
 struct Usage_error : std::runtime_error {
@@ -32,8 +38,19 @@ struct Vertices_command {
   std::string format = "text";
   bool format_given = false;
   bool stats = false;
+  bool brute_force = false;
+  int threads = 1;
+  std::optional<Axis_box> box;
   Read_options read_options;
 };
+
+double parse_number(const std::string& text, const std::string& option) {
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    throw Usage_error("option " + option + " needs finite numbers, not '" + text + "'");
+  return value;
+}
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -56,7 +73,21 @@ Vertices_command parse_vertices(const std::vector<std::string>& args) {
         throw Usage_error("unknown format '" + command.format + "' (text or json)");
     } else if (a == "--algorithm") {
       const std::string& algorithm = value_of(i);
-      if (algorithm != "brute") throw Usage_error("unknown algorithm '" + algorithm + "' (brute)");
+      if (algorithm != "brute" && algorithm != "octree")
+        throw Usage_error("unknown algorithm '" + algorithm + "' (octree or brute)");
+      command.brute_force = algorithm == "brute";
+    } else if (a == "--threads") {
+      const double threads = parse_number(value_of(i), a);
+      if (threads < 1 || threads > 1024 || threads != std::floor(threads))
+        throw Usage_error("option --threads needs an integer from 1 to 1024");
+      command.threads = static_cast<int>(threads);
+    } else if (a == "--box") {
+      if (i + 6 >= args.size()) throw Usage_error("option --box needs 6 numbers X0 Y0 Z0 X1 Y1 Z1");
+      Axis_box box;
+      for (int k = 0; k < 6; ++k) (k < 3 ? box.lo[k] : box.hi[k - 3]) = parse_number(args[++i], a);
+      for (int k = 0; k < 3; ++k)
+        if (!(box.lo[k] <= box.hi[k])) throw Usage_error("option --box needs X0 <= X1, Y0 <= Y1, Z0 <= Z1");
+      command.box = box;
     } else if (a == "--stats") {
       command.stats = true;
     } else if (a == "--keep-hydrogens") {
@@ -85,7 +116,9 @@ int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::o
   const Vertices_command command = parse_vertices(args);
   const Site_input input = read_sites(command.input, command.read_options);
   reset_predicate_statistics();
-  const Diagram diagram = brute_force_diagram(input.sites);
+  Diagram diagram = command.brute_force ? brute_force_diagram(input.sites)
+                                        : octree_diagram(input.sites, Octree_options{command.threads});
+  if (command.box) restrict_to_box(diagram, *command.box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
 
   const std::function<void(std::ostream&)> write = [&](std::ostream& o) {

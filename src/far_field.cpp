@@ -1,0 +1,142 @@
+#include "far_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "compare_vertices.h"
+#include "rounding_guard.h"
+#include "vertex_conflict.h"
+#include "vertex_in_box.h"
+#include "vertices_of.h"
+
+namespace apollonius {
+namespace {
+
+// Patches are refined at most this often (6 * 4^10 patches at the most, only where sites nearly tie at
+// infinity); a patch still holding 4 or more sites there is decided by enumerating their quadruples.
+constexpr int kMaxPatchDepth = 10;
+
+using Found_vertex = std::pair<std::vector<Site_index>, Vertex>;
+
+struct Patch {
+  int axis;     // the face of [-1, 1]^3: direction y with y[axis] = side
+  double side;  // +1 or -1
+  double s0, s1, t0, t1;  // the other two coordinates of y, in axis order
+  int depth;
+};
+
+class Far_field {
+ public:
+  Far_field(const std::vector<Site>& sites, const std::vector<Site_index>& escaping, const std::array<double, 3>& origin,
+            double radius, const Axis_box& root)
+      : sites_(sites), escaping_(escaping), origin_{Interval(origin[0]), Interval(origin[1]), Interval(origin[2])},
+        radius_(radius), root_(root) {}
+
+  void refine(const Patch& p, const std::vector<Site_index>& candidates) {
+    std::vector<Site_index> kept;
+    {
+      Rounding_guard guard;
+      std::vector<Interval> support_of(candidates.size());
+      std::size_t best = 0;
+      for (std::size_t k = 0; k < candidates.size(); ++k) {
+        support_of[k] = support(p, candidates[k]);
+        if (support_of[k].inf() > support_of[best].inf()) best = k;
+      }
+      const Interval witness_offset = offset_norm(candidates[best]);
+      for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const Interval margin = Interval(support_of[best].inf()) - Interval(support_of[k].sup());
+        if (k == best || !(margin.inf() > 0) || !(leaves_within_radius(candidates[k], witness_offset, margin.inf())))
+          kept.push_back(candidates[k]);
+      }
+    }
+    if (kept.size() <= 3) return;
+    if (p.depth >= kMaxPatchDepth) {
+      decide_quadruples(kept);
+      return;
+    }
+    const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2;
+    for (int q = 0; q < 4; ++q)
+      refine({p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0, q & 2 ? p.t1 : tm, p.depth + 1},
+             kept);
+  }
+
+  std::vector<Found_vertex> take_vertices() { return std::move(found_); }
+
+ private:
+  // u.a + w over the directions of the patch: y = (side, s, t) in face coordinates, u = y / |y|.
+  Interval support(const Patch& p, Site_index i) const {
+    const Site& s = sites_[i];
+    const Interval a[3] = {Interval(s.x) - origin_[0], Interval(s.y) - origin_[1], Interval(s.z) - origin_[2]};
+    const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
+    const Interval S(p.s0, p.s1), T(p.t0, p.t1);
+    const Interval linear = Interval(p.side) * a[p.axis] + S * a[first] + T * a[second];
+    const Interval norm = CGAL::sqrt(Interval(1) + CGAL::square(S) + CGAL::square(T));
+    return linear / norm + Interval(s.w);
+  }
+
+  Interval offset_norm(Site_index i) const {
+    const Site& s = sites_[i];
+    return CGAL::sqrt(CGAL::square(Interval(s.x) - origin_[0]) + CGAL::square(Interval(s.y) - origin_[1]) +
+                      CGAL::square(Interval(s.z) - origin_[2]));
+  }
+
+  // Whether site i, beaten by margin m by a witness at distance |a_j| from O, owns no point of the cone
+  // beyond the root box's inscribed ball: max(2|a_i|, 2|a_j|, 2|a_j|^2 / m) <= radius.
+  bool leaves_within_radius(Site_index i, const Interval& witness_offset, double margin) const {
+    const Interval beyond = Interval(2) * CGAL::square(witness_offset) / Interval(margin);
+    return std::max({(Interval(2) * offset_norm(i)).sup(), (Interval(2) * witness_offset).sup(), beyond.sup()}) <= radius_;
+  }
+
+  // Every vertex outside the root box whose tie set lies among `candidates`, decided exactly against the
+  // escaping sites (which own every point outside the box).
+  void decide_quadruples(const std::vector<Site_index>& candidates) {
+    const std::size_t k = candidates.size();
+    const std::array<bool, 3> closed = {true, true, true};
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t b = a + 1; b < k; ++b)
+        for (std::size_t c = b + 1; c < k; ++c)
+          for (std::size_t d = c + 1; d < k; ++d) {
+            const Quadruple q = make_quadruple({candidates[a], candidates[b], candidates[c], candidates[d]}, sites_);
+            for (const Vertex& v : vertices_of(q).vertices) {
+              if (vertex_in_box(v, root_, closed)) continue;
+              std::vector<Site_index> tie(v.sites().begin(), v.sites().end());
+              bool is_vertex = true;
+              for (Site_index s : escaping_) {
+                if (std::find(tie.begin(), tie.begin() + 4, s) != tie.begin() + 4) continue;
+                const Sign sign = vertex_conflict(v, sites_[s]);
+                if (sign == Sign::NEGATIVE) {
+                  is_vertex = false;
+                  break;
+                }
+                if (sign == Sign::ZERO) tie.push_back(s);
+              }
+              if (!is_vertex) continue;
+              std::sort(tie.begin(), tie.end());
+              const bool seen = std::any_of(found_.begin(), found_.end(), [&](const Found_vertex& f) {
+                return f.first == tie && compare_vertices(f.second, v) == Sign::ZERO;
+              });
+              if (!seen) found_.emplace_back(std::move(tie), v);
+            }
+          }
+  }
+
+  const std::vector<Site>& sites_;
+  const std::vector<Site_index>& escaping_;
+  std::array<Interval, 3> origin_;
+  double radius_;
+  Axis_box root_;
+  std::vector<Found_vertex> found_;
+};
+
+}  // namespace
+
+std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+                                       const std::array<double, 3>& origin, double radius, const Axis_box& root) {
+  Far_field field(sites, escaping, origin, radius, root);
+  if (escaping.size() >= 4)
+    for (int axis = 0; axis < 3; ++axis)
+      for (double side : {-1.0, 1.0}) field.refine({axis, side, -1, 1, -1, 1, 0}, escaping);
+  return field.take_vertices();
+}
+
+}  // namespace apollonius
