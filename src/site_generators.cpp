@@ -1,6 +1,7 @@
 #include "site_generators.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace apollonius {
@@ -28,7 +29,8 @@ class Random {
 const Site_family kFamilies[] = {Site_family::uniform,  Site_family::equal_weights, Site_family::lattice,
                                  Site_family::coplanar, Site_family::collinear,     Site_family::nested,
                                  Site_family::tangent,  Site_family::mixed_sign,    Site_family::duplicates,
-                                 Site_family::cospherical};
+                                 Site_family::cospherical, Site_family::scaled_up,  Site_family::scaled_down,
+                                 Site_family::lattice_noise, Site_family::far_vertices};
 
 Site random_site(Random& random, long extent, double min_weight, double max_weight) {
   return {random.eighths(-extent, extent), random.eighths(-extent, extent), random.eighths(-extent, extent),
@@ -49,6 +51,10 @@ const char* name_of(Site_family family) {
     case Site_family::mixed_sign: return "mixed-sign";
     case Site_family::duplicates: return "duplicates";
     case Site_family::cospherical: return "cospherical";
+    case Site_family::scaled_up: return "scaled-up";
+    case Site_family::scaled_down: return "scaled-down";
+    case Site_family::lattice_noise: return "lattice-noise";
+    case Site_family::far_vertices: return "far-vertices";
   }
   throw std::invalid_argument("unknown site family");
 }
@@ -69,6 +75,22 @@ Site_family site_family_from_name(const std::string& name) {
 }
 
 std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_t seed) {
+  if (family == Site_family::scaled_up || family == Site_family::scaled_down) {
+    std::vector<Site> sites = generate_sites(Site_family::uniform, n, seed);
+    const int e = family == Site_family::scaled_up ? 300 : -300;
+    for (Site& s : sites) s = {std::ldexp(s.x, e), std::ldexp(s.y, e), std::ldexp(s.z, e), std::ldexp(s.w, e)};
+    return sites;
+  }
+  if (family == Site_family::lattice_noise) {
+    std::vector<Site> sites = generate_sites(Site_family::lattice, n, seed);
+    Random random(seed);
+    for (Site& s : sites)
+      for (double* c : {&s.x, &s.y, &s.z}) {
+        const long step = random.integer(-1, 1);
+        if (step != 0) *c = std::nextafter(*c, step * INFINITY);
+      }
+    return sites;
+  }
   Random random(seed * 0x2545F4914F6CDD1Dull + static_cast<std::uint64_t>(family));
   std::vector<Site> sites;
   sites.reserve(n);
@@ -131,6 +153,22 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
           sites.push_back(random_site(random, 10, 0.5, 3));
         break;
       }
+      case Site_family::far_vertices: {
+        // Four points on the unit circle of the plane z = 0, one lifted by 2^-20: their circumsphere is
+        // about 10^6 times their size. The other sites lie below z = -2, clear of that sphere.
+        if (sites.empty()) {
+          const double lift = std::ldexp(1.0, -20) * static_cast<double>(random.integer(1, 3));
+          sites = {{1, 0, 0, 0.25}, {0, 1, 0, 0.25}, {-1, 0, 0, 0.25}, {0, -1, lift, 0.25}};
+          while (sites.size() > n) sites.pop_back();
+        } else {
+          sites.push_back({random.eighths(-2, 2), random.eighths(-2, 2), random.eighths(-6, -2), 0.25});
+        }
+        break;
+      }
+      case Site_family::scaled_up:
+      case Site_family::scaled_down:
+      case Site_family::lattice_noise:
+        break;  // built from other families above
       case Site_family::cospherical: {
         // Balls tangent to the sphere of radius 2 about the origin from outside: centre on an axis at
         // distance c, weight c - 2.

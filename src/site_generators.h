@@ -21,6 +21,10 @@ enum class Site_family {
   mixed_sign,     // weights of both signs
   duplicates,     // exact repeats of earlier sites
   cospherical,    // many balls tangent to one sphere
+  scaled_up,      // uniform, scaled by 2^300
+  scaled_down,    // uniform, scaled by 2^-300
+  lattice_noise,  // lattice points moved by one ulp: vertices nearly, but not exactly, coincide
+  far_vertices,   // nearly cocircular points above a cloud: vertices 10^6 input diameters away
 };
 
 const std::vector<std::string>& site_family_names();

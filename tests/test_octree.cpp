@@ -33,13 +33,22 @@ std::uint64_t seeds_per_family(std::uint64_t default_count) {
   return default_count;
 }
 
+// Families whose every predicate reaches the exact stage (intervals overflow or underflow at 2^+-300) or
+// whose vertices nearly coincide cost ~50 times more; they get fewer seeds per CI run.
+std::uint64_t seeds_for(Site_family family) {
+  const bool expensive = family == Site_family::scaled_up || family == Site_family::scaled_down ||
+                         family == Site_family::lattice_noise;
+  return seeds_per_family(expensive ? 25 : 500);
+}
+
 }  // namespace
 
 TEST_CASE("octree equals brute force on every generator family") {
-  const std::uint64_t seeds = seeds_per_family(500);
-  std::size_t inputs = 0, vertices = 0;
+  std::size_t inputs = 0, vertices = 0, expected_inputs = 0;
   for (const std::string& name : site_family_names()) {
     const Site_family family = site_family_from_name(name);
+    const std::uint64_t seeds = seeds_for(family);
+    expected_inputs += seeds;
     for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
       const std::size_t n = 5 + (seed * 7919) % 36;  // 5 to 40 sites
       CAPTURE(name);
@@ -54,7 +63,8 @@ TEST_CASE("octree equals brute force on every generator family") {
     }
   }
   MESSAGE(inputs << " inputs, " << vertices << " vertices, all equal");
-  CHECK(inputs == seeds * site_family_names().size());
+  CHECK(inputs == expected_inputs);
+  CHECK(inputs >= 5000);
 }
 
 TEST_CASE("octree equals brute force on the small vdrc sets") {
