@@ -1,5 +1,7 @@
 #include "far_field.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,20 +31,35 @@ class Far_field {
  public:
   Far_field(const std::vector<Site>& sites, const std::vector<Site_index>& escaping, const std::array<double, 3>& origin,
             double radius, const Axis_box& root)
-      : sites_(sites), escaping_(escaping), origin_{Interval(origin[0]), Interval(origin[1]), Interval(origin[2])},
-        radius_(radius), root_(root) {}
+      : sites_(sites), escaping_(escaping), radius_(radius), root_(root), offsets_(sites.size()) {
+    Rounding_guard guard;
+    for (Site_index i : escaping) {
+      Offset& o = offsets_[i];
+      o.a = {Interval(sites[i].x) - Interval(origin[0]), Interval(sites[i].y) - Interval(origin[1]),
+             Interval(sites[i].z) - Interval(origin[2])};
+      o.norm = CGAL::sqrt(CGAL::square(o.a[0]) + CGAL::square(o.a[1]) + CGAL::square(o.a[2]));
+    }
+  }
 
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
     std::vector<Site_index> kept;
     {
       Rounding_guard guard;
+      // u.a + w over the directions of the patch: y = (side, s, t) in face coordinates, u = y / |y|.
+      const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
+      const Interval S(p.s0, p.s1), T(p.t0, p.t1);
+      const Interval norm = CGAL::sqrt(Interval(1) + CGAL::square(S) + CGAL::square(T));
+      auto support = [&](Site_index i) {
+        const auto& a = offsets_[i].a;
+        return (Interval(p.side) * a[p.axis] + S * a[first] + T * a[second]) / norm + Interval(sites_[i].w);
+      };
       std::vector<Interval> support_of(candidates.size());
       std::size_t best = 0;
       for (std::size_t k = 0; k < candidates.size(); ++k) {
-        support_of[k] = support(p, candidates[k]);
+        support_of[k] = support(candidates[k]);
         if (support_of[k].inf() > support_of[best].inf()) best = k;
       }
-      const Interval witness_offset = offset_norm(candidates[best]);
+      const Interval witness_offset = offsets_[candidates[best]].norm;
       for (std::size_t k = 0; k < candidates.size(); ++k) {
         const Interval margin = Interval(support_of[best].inf()) - Interval(support_of[k].sup());
         if (k == best || !(margin.inf() > 0) || !(leaves_within_radius(candidates[k], witness_offset, margin.inf())))
@@ -50,7 +67,7 @@ class Far_field {
       }
     }
     if (kept.size() <= 3) return;
-    if (p.depth >= kMaxPatchDepth) {
+    if (kept.size() == 4 || p.depth >= kMaxPatchDepth) {
       decide_quadruples(kept);
       return;
     }
@@ -63,28 +80,11 @@ class Far_field {
   std::vector<Found_vertex> take_vertices() { return std::move(found_); }
 
  private:
-  // u.a + w over the directions of the patch: y = (side, s, t) in face coordinates, u = y / |y|.
-  Interval support(const Patch& p, Site_index i) const {
-    const Site& s = sites_[i];
-    const Interval a[3] = {Interval(s.x) - origin_[0], Interval(s.y) - origin_[1], Interval(s.z) - origin_[2]};
-    const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
-    const Interval S(p.s0, p.s1), T(p.t0, p.t1);
-    const Interval linear = Interval(p.side) * a[p.axis] + S * a[first] + T * a[second];
-    const Interval norm = CGAL::sqrt(Interval(1) + CGAL::square(S) + CGAL::square(T));
-    return linear / norm + Interval(s.w);
-  }
-
-  Interval offset_norm(Site_index i) const {
-    const Site& s = sites_[i];
-    return CGAL::sqrt(CGAL::square(Interval(s.x) - origin_[0]) + CGAL::square(Interval(s.y) - origin_[1]) +
-                      CGAL::square(Interval(s.z) - origin_[2]));
-  }
-
   // Whether site i, beaten by margin m by a witness at distance |a_j| from O, owns no point of the cone
   // beyond the root box's inscribed ball: max(2|a_i|, 2|a_j|, 2|a_j|^2 / m) <= radius.
   bool leaves_within_radius(Site_index i, const Interval& witness_offset, double margin) const {
     const Interval beyond = Interval(2) * CGAL::square(witness_offset) / Interval(margin);
-    return std::max({(Interval(2) * offset_norm(i)).sup(), (Interval(2) * witness_offset).sup(), beyond.sup()}) <= radius_;
+    return std::max({(Interval(2) * offsets_[i].norm).sup(), (Interval(2) * witness_offset).sup(), beyond.sup()}) <= radius_;
   }
 
   // Every vertex outside the root box whose tie set lies among `candidates`, decided exactly against the
@@ -120,11 +120,17 @@ class Far_field {
           }
   }
 
+  // a = p - O and |a| for every escaping site.
+  struct Offset {
+    std::array<Interval, 3> a;
+    Interval norm;
+  };
+
   const std::vector<Site>& sites_;
   const std::vector<Site_index>& escaping_;
-  std::array<Interval, 3> origin_;
   double radius_;
   Axis_box root_;
+  std::vector<Offset> offsets_;
   std::vector<Found_vertex> found_;
 };
 
@@ -132,11 +138,24 @@ class Far_field {
 
 std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root) {
-  Far_field field(sites, escaping, origin, radius, root);
-  if (escaping.size() >= 4)
-    for (int axis = 0; axis < 3; ++axis)
-      for (double side : {-1.0, 1.0}) field.refine({axis, side, -1, 1, -1, 1, 0}, escaping);
-  return field.take_vertices();
+  if (escaping.size() < 4) return {};
+  // The six faces of the direction cube are independent; the vertices they find are merged in face order
+  // and kept once (a vertex near a patch border can be found from both sides).
+  std::vector<std::vector<Found_vertex>> by_face(6);
+  tbb::parallel_for(0, 6, [&](int face) {
+    Far_field field(sites, escaping, origin, radius, root);
+    field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0}, escaping);
+    by_face[face] = field.take_vertices();
+  });
+  std::vector<Found_vertex> vertices;
+  for (auto& found : by_face)
+    for (Found_vertex& f : found) {
+      const bool seen = std::any_of(vertices.begin(), vertices.end(), [&](const Found_vertex& g) {
+        return g.first == f.first && compare_vertices(g.second, f.second) == Sign::ZERO;
+      });
+      if (!seen) vertices.push_back(std::move(f));
+    }
+  return vertices;
 }
 
 }  // namespace apollonius

@@ -361,13 +361,14 @@ Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& opt
 
   const Box_refiner refiner(sites, root);
   std::vector<std::vector<Found_vertex>> found(items.size());
-  tbb::task_arena arena(std::max(1, options.threads));
+  std::vector<Found_vertex> vertices;
+  tbb::task_arena arena(std::max(1, options.threads));  // every parallel step runs inside: --threads holds
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, items.size(), [&](std::size_t w) {
       refiner.refine(items[w].box, *items[w].candidates, 0, 0, found[w]);
     });
+    vertices = far_vertices(sites, escaping, origin, radius, root);
   });
-  std::vector<Found_vertex> vertices = far_vertices(sites, escaping, origin, radius, root);
   for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(vertices));
   return assemble_diagram(sites.size(), std::move(hidden), std::move(vertices));
 }
