@@ -5,11 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "compare_vertices.h"
+#include "leaf_decision.h"
 #include "rounding_guard.h"
-#include "vertex_conflict.h"
 #include "vertex_in_box.h"
-#include "vertices_of.h"
 
 namespace apollonius {
 namespace {
@@ -17,8 +15,6 @@ namespace {
 // Patches are refined at most this often (6 * 4^10 patches at the most, only where sites nearly tie at
 // infinity); a patch still holding 4 or more sites there is decided by enumerating their quadruples.
 constexpr int kMaxPatchDepth = 10;
-
-using Found_vertex = std::pair<std::vector<Site_index>, Vertex>;
 
 struct Patch {
   int axis;     // the face of [-1, 1]^3: direction y with y[axis] = side
@@ -90,34 +86,9 @@ class Far_field {
   // Every vertex outside the root box whose tie set lies among `candidates`, decided exactly against the
   // escaping sites (which own every point outside the box).
   void decide_quadruples(const std::vector<Site_index>& candidates) {
-    const std::size_t k = candidates.size();
     const std::array<bool, 3> closed = {true, true, true};
-    for (std::size_t a = 0; a < k; ++a)
-      for (std::size_t b = a + 1; b < k; ++b)
-        for (std::size_t c = b + 1; c < k; ++c)
-          for (std::size_t d = c + 1; d < k; ++d) {
-            const Quadruple q = make_quadruple({candidates[a], candidates[b], candidates[c], candidates[d]}, sites_);
-            for (const Vertex& v : vertices_of(q).vertices) {
-              if (vertex_in_box(v, root_, closed)) continue;
-              std::vector<Site_index> tie(v.sites().begin(), v.sites().end());
-              bool is_vertex = true;
-              for (Site_index s : escaping_) {
-                if (std::find(tie.begin(), tie.begin() + 4, s) != tie.begin() + 4) continue;
-                const Sign sign = vertex_conflict(v, sites_[s]);
-                if (sign == Sign::NEGATIVE) {
-                  is_vertex = false;
-                  break;
-                }
-                if (sign == Sign::ZERO) tie.push_back(s);
-              }
-              if (!is_vertex) continue;
-              std::sort(tie.begin(), tie.end());
-              const bool seen = std::any_of(found_.begin(), found_.end(), [&](const Found_vertex& f) {
-                return f.first == tie && compare_vertices(f.second, v) == Sign::ZERO;
-              });
-              if (!seen) found_.emplace_back(std::move(tie), v);
-            }
-          }
+    apollonius::decide_quadruples(sites_, candidates, escaping_, [&](const Vertex& v) { return !vertex_in_box(v, root_, closed); },
+                                  found_, 0);
   }
 
   // a = p - O and |a| for every escaping site.
@@ -149,12 +120,7 @@ std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std
   });
   std::vector<Found_vertex> vertices;
   for (auto& found : by_face)
-    for (Found_vertex& f : found) {
-      const bool seen = std::any_of(vertices.begin(), vertices.end(), [&](const Found_vertex& g) {
-        return g.first == f.first && compare_vertices(g.second, f.second) == Sign::ZERO;
-      });
-      if (!seen) vertices.push_back(std::move(f));
-    }
+    for (Found_vertex& f : found) append_unique(vertices, 0, std::move(f));
   return vertices;
 }
 

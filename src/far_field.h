@@ -17,16 +17,14 @@
 #include <vector>
 
 #include "axis_box.h"
-#include "vertex.h"
+#include "leaf_decision.h"
 
 namespace apollonius {
 
 // Every vertex of the diagram outside the closed root box, with its tie set. `escaping` must contain every
 // site that owns a point outside the box, and the root box must contain the ball of radius `radius`
 // about `origin`.
-std::vector<std::pair<std::vector<Site_index>, Vertex>> far_vertices(const std::vector<Site>& sites,
-                                                                     const std::vector<Site_index>& escaping,
-                                                                     const std::array<double, 3>& origin,
-                                                                     double radius, const Axis_box& root);
+std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+                                       const std::array<double, 3>& origin, double radius, const Axis_box& root);
 
 }  // namespace apollonius

@@ -8,20 +8,16 @@
 #include <limits>
 #include <queue>
 
-#include "compare_vertices.h"
 #include "dominates_on_box.h"
 #include "far_field.h"
+#include "leaf_decision.h"
 #include "lipschitz_filter.h"
 #include "rounding_guard.h"
 #include "site_set.h"
-#include "vertex_conflict.h"
 #include "vertex_in_box.h"
-#include "vertices_of.h"
 
 namespace apollonius {
 namespace {
-
-using Found_vertex = std::pair<std::vector<Site_index>, Vertex>;
 
 // A leaf is decided by enumerating the quadruples of its candidates once refining stops helping: the
 // candidate count has not dropped for kStagnationLevels levels and the box is tiny against the candidates
@@ -269,36 +265,8 @@ class Box_refiner {
   // site owning a point of the box).
   void decide_leaf(const Axis_box& box, const std::vector<Site_index>& candidates, std::vector<Found_vertex>& out) const {
     const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
-    const std::size_t first_of_leaf = out.size();
-    const std::size_t k = candidates.size();
-    std::vector<Site_index> tie;
-    for (std::size_t a = 0; a < k; ++a)
-      for (std::size_t b = a + 1; b < k; ++b)
-        for (std::size_t c = b + 1; c < k; ++c)
-          for (std::size_t d = c + 1; d < k; ++d) {
-            const Quadruple q = make_quadruple({candidates[a], candidates[b], candidates[c], candidates[d]}, sites_);
-            for (const Vertex& v : vertices_of(q).vertices) {
-              if (!vertex_in_box(v, box, closed_above)) continue;
-              if (!tie_set_among(v, candidates, tie)) continue;
-              const bool seen = std::any_of(out.begin() + first_of_leaf, out.end(), [&](const Found_vertex& f) {
-                return f.first == tie && compare_vertices(f.second, v) == Sign::ZERO;
-              });
-              if (!seen) out.emplace_back(tie, v);
-            }
-          }
-  }
-
-  bool tie_set_among(const Vertex& v, const std::vector<Site_index>& candidates, std::vector<Site_index>& tie) const {
-    const auto& own = v.sites();
-    tie.assign(own.begin(), own.end());
-    for (Site_index s : candidates) {
-      if (std::find(own.begin(), own.end(), s) != own.end()) continue;
-      const Sign sign = vertex_conflict(v, sites_[s]);
-      if (sign == Sign::NEGATIVE) return false;
-      if (sign == Sign::ZERO) tie.push_back(s);
-    }
-    std::sort(tie.begin(), tie.end());
-    return true;
+    decide_quadruples(sites_, candidates, candidates, [&](const Vertex& v) { return vertex_in_box(v, box, closed_above); },
+                      out, out.size());
   }
 
   const std::vector<Site>& sites_;

@@ -113,7 +113,7 @@ TEST_CASE("equal weights: the vertices are the circumcentres of the Delaunay cel
 }
 
 TEST_CASE("vdrc anomaly sets: every vertex is reported") {
-  const std::string vdrc = std::string(APOLLONIUS_SHARED_DATA) + "/vdrc/";
+  const std::string vdrc = std::string(APOLLONIUS_TEST_DATA) + "/vdrc/";
   SUBCASE("ANO1_0CONNECT") {
     const std::vector<Site> sites = read_sites(vdrc + "ANO1_0CONNECT.txt", {}).sites;
     const Diagram d = brute_force_diagram(sites);

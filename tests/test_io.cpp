@@ -150,7 +150,7 @@ TEST_CASE("balls text: comments, blank lines, CRLF, Voronota annotations") {
 }
 
 TEST_CASE("vdrc: count line, then id x y z r; ids ignored, file order kept") {
-  const Site_input input = read_sites(APOLLONIUS_SHARED_DATA "/vdrc/ANO3_3CONNECT.txt", default_options);
+  const Site_input input = read_sites(APOLLONIUS_TEST_DATA "/vdrc/ANO3_3CONNECT.txt", default_options);
   CHECK(input.format == Input_format::vdrc);
   REQUIRE(input.sites.size() == 9);
   CHECK(input.sites.front() == Site{-31, 0, 0, 25});

@@ -70,7 +70,7 @@ TEST_CASE("octree equals brute force on every generator family") {
 TEST_CASE("octree equals brute force on the small vdrc sets") {
   for (const char* name : {"ANO1_0CONNECT", "ANO3_3CONNECT", "Vis_I_10", "Vis_II_5", "Vis_III_5", "Vis_V_20", "Vis_VII_20"}) {
     CAPTURE(name);
-    const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_SHARED_DATA) + "/vdrc/" + name + ".txt", {}).sites;
+    const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", {}).sites;
     const Diagram octree = octree_diagram(sites);
     validate_diagram(octree, sites);
     check_same(octree, brute_force_diagram(sites));

@@ -51,7 +51,7 @@ TEST_CASE("pept: the same quadruples as voronota calculate-vertices, coordinates
 }
 
 TEST_CASE("vdrc ANO3_3CONNECT: Voronota reports only some of the 8 vertices, all of them real") {
-  const std::string file = std::string(APOLLONIUS_SHARED_DATA) + "/vdrc/ANO3_3CONNECT.txt";
+  const std::string file = std::string(APOLLONIUS_TEST_DATA) + "/vdrc/ANO3_3CONNECT.txt";
   const std::vector<Site> sites = read_sites(file, {}).sites;
   const Diagram d = brute_force_diagram(sites);
   REQUIRE(d.vertices.size() == 8);

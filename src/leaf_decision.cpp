@@ -1,0 +1,51 @@
+#include "leaf_decision.h"
+
+#include <algorithm>
+
+#include "compare_vertices.h"
+#include "vertex_conflict.h"
+#include "vertices_of.h"
+
+namespace apollonius {
+namespace {
+
+// The tie set of v among `owners`, or false if one of them is strictly closer.
+bool tie_set_among(const Vertex& v, const std::vector<Site>& sites, const std::vector<Site_index>& owners,
+                   std::vector<Site_index>& tie) {
+  const auto& own = v.sites();
+  tie.assign(own.begin(), own.end());
+  for (Site_index s : owners) {
+    if (std::find(own.begin(), own.end(), s) != own.end()) continue;
+    const Sign sign = vertex_conflict(v, sites[s]);
+    if (sign == Sign::NEGATIVE) return false;
+    if (sign == Sign::ZERO) tie.push_back(s);
+  }
+  std::sort(tie.begin(), tie.end());
+  return true;
+}
+
+}  // namespace
+
+void append_unique(std::vector<Found_vertex>& out, std::size_t first, Found_vertex found) {
+  const bool seen = std::any_of(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [&](const Found_vertex& f) {
+    return f.first == found.first && compare_vertices(f.second, found.second) == Sign::ZERO;
+  });
+  if (!seen) out.push_back(std::move(found));
+}
+
+void decide_quadruples(const std::vector<Site>& sites, const std::vector<Site_index>& candidates,
+                       const std::vector<Site_index>& owners, const std::function<bool(const Vertex&)>& located,
+                       std::vector<Found_vertex>& out, std::size_t first) {
+  const std::size_t k = candidates.size();
+  std::vector<Site_index> tie;
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = a + 1; b < k; ++b)
+      for (std::size_t c = b + 1; c < k; ++c)
+        for (std::size_t d = c + 1; d < k; ++d) {
+          const Quadruple q = make_quadruple({candidates[a], candidates[b], candidates[c], candidates[d]}, sites);
+          for (const Vertex& v : vertices_of(q).vertices)
+            if (located(v) && tie_set_among(v, sites, owners, tie)) append_unique(out, first, {tie, v});
+        }
+}
+
+}  // namespace apollonius
