@@ -2,7 +2,7 @@
 // A lambda^2 + 2 B lambda + C = 0 and the coordinates X = (Q + lambda n) / n_k they give.
 #pragma once
 
-#include <vector>
+#include <boost/container/static_vector.hpp>
 
 #include "vertex.h"
 
@@ -13,7 +13,7 @@ namespace apollonius {
 template <class NT>
 struct Line_roots {
   bool whole_line_on_cone = false;
-  std::vector<Line_root<NT>> roots;  // in the order MINUS, PLUS, or one SINGLE
+  boost::container::static_vector<Line_root<NT>, 2> roots;  // in the order MINUS, PLUS, or one SINGLE
 };
 
 template <class NT>

@@ -26,12 +26,6 @@ NT lorentz_product(const Vector4<NT>& x, const Vector4<NT>& y) {
   return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] - x[3] * y[3];
 }
 
-template <class NT>
-NT determinant3(const std::array<NT, 3>& c0, const std::array<NT, 3>& c1, const std::array<NT, 3>& c2) {
-  return c0[0] * (c1[1] * c2[2] - c1[2] * c2[1]) - c1[0] * (c0[1] * c2[2] - c0[2] * c2[1]) +
-         c2[0] * (c0[1] * c1[2] - c0[2] * c1[1]);
-}
-
 // Invariant: pivot == -1 exactly when rank M < 3; otherwise n[pivot] != 0 and Q[pivot] == 0.
 template <class NT>
 struct Quadruple_line {
@@ -55,27 +49,47 @@ Relative_site<NT> relative_site(const Site& origin, const Site& s) {
   return r;
 }
 
+// The 3x3 minors of the 3 x 5 matrix [M | c] (columns 0..3 of M, column 4 = c), by Laplace expansion along
+// the first row over the ten 2x2 minors of the other two rows, which the seven minors needed share.
+template <class NT>
+class Minors_of_extended_matrix {
+ public:
+  explicit Minors_of_extended_matrix(const std::array<std::array<NT, 5>, 3>& rows) : first_(rows[0]) {
+    for (int p = 0; p < 5; ++p)
+      for (int q = p + 1; q < 5; ++q) lower_[p][q] = rows[1][p] * rows[2][q] - rows[1][q] * rows[2][p];
+  }
+  // The determinant of columns p < q < s.
+  NT operator()(int p, int q, int s) const {
+    return first_[p] * lower_[q][s] - first_[q] * lower_[p][s] + first_[s] * lower_[p][q];
+  }
+
+ private:
+  std::array<NT, 5> first_;
+  std::array<std::array<NT, 5>, 5> lower_;  // lower_[p][q], p < q
+};
+
 template <class NT>
 Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
-  std::array<Relative_site<NT>, 3> rel;
-  for (int m = 0; m < 3; ++m) rel[m] = relative_site<NT>(sites[0], sites[m + 1]);
-  // Columns of M, and c.
-  std::array<std::array<NT, 3>, 4> column;
-  std::array<NT, 3> c;
+  std::array<std::array<NT, 5>, 3> rows;
   for (int m = 0; m < 3; ++m) {
-    for (int j = 0; j < 4; ++j) column[j][m] = rel[m].row[j];
-    c[m] = rel[m].rhs;
+    const Relative_site<NT> r = relative_site<NT>(sites[0], sites[m + 1]);
+    for (int j = 0; j < 4; ++j) rows[m][j] = r.row[j];
+    rows[m][4] = r.rhs;
   }
-  // The three columns other than `skip`, in order, with column `replace` (if any) swapped for c.
-  auto minor = [&](int skip, int replace) {
-    std::array<std::array<NT, 3>, 3> cols;
+  const Minors_of_extended_matrix<NT> minor(rows);
+  // The columns of M other than `skip`, ascending.
+  const auto others = [](int skip) {
+    std::array<int, 3> c{};
     for (int j = 0, t = 0; j < 4; ++j)
-      if (j != skip) cols[t++] = (j == replace) ? c : column[j];
-    return determinant3(cols[0], cols[1], cols[2]);
+      if (j != skip) c[t++] = j;
+    return c;
   };
 
   Quadruple_line<NT> line;
-  for (int j = 0; j < 4; ++j) line.n[j] = (j % 2 == 0) ? minor(j, -1) : -minor(j, -1);
+  for (int j = 0; j < 4; ++j) {
+    const std::array<int, 3> c = others(j);
+    line.n[j] = (j % 2 == 0) ? minor(c[0], c[1], c[2]) : -minor(c[0], c[1], c[2]);
+  }
   for (int k : {3, 0, 1, 2}) {
     if (certain_sign(line.n[k]) != Sign::ZERO) {
       line.pivot = k;
@@ -85,7 +99,15 @@ Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
   if (line.pivot < 0) return line;
   const int k = line.pivot;
   // Cramer on the columns other than k: Q_j = n_k * Y_j = (-1)^k det(M_{-k} with column j replaced by c).
-  for (int j = 0; j < 4; ++j) line.Q[j] = (j == k) ? NT(0) : ((k % 2 == 0) ? minor(k, j) : -minor(k, j));
+  // Moving c from position t of the three columns to the last takes 2 - t transpositions.
+  const std::array<int, 3> c = others(k);
+  for (int t = 0; t < 3; ++t) {
+    const int j = c[t];
+    const int p = c[t == 0 ? 1 : 0], q = c[t == 2 ? 1 : 2];
+    const NT determinant = minor(p, q, 4);
+    line.Q[j] = ((k + t) % 2 == 0) ? determinant : -determinant;
+  }
+  line.Q[k] = NT(0);
   line.A = lorentz_product(line.n, line.n);
   line.B = lorentz_product(line.Q, line.n);
   line.C = lorentz_product(line.Q, line.Q);

@@ -3,6 +3,7 @@
 // Theorem 4, without its non-coplanarity assumption).
 #pragma once
 
+#include <boost/container/static_vector.hpp>
 #include <vector>
 
 #include "filtered_predicate.h"
@@ -14,7 +15,7 @@ namespace apollonius {
 struct Quadruple_vertices {
   bool rank_deficient = false;     // rank M < 3: the equidistant set is not discrete
   bool equidistant_curve = false;  // rank 3, but the whole line lies on the cone (a ray of ties)
-  std::vector<Vertex> vertices;
+  boost::container::static_vector<Vertex, 2> vertices;  // a quadratic has at most two roots
 };
 
 // X gives r + w_m >= 0 for m = 0..3: X_3 + 2 b_m >= 0 with b_0 = 0.

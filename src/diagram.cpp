@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "compare_vertices.h"
-#include "correct_rounding.h"
+#include "vertex_rounding.h"
 #include "vertex_in_box.h"
 
 namespace apollonius {
@@ -15,9 +15,7 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   diagram.hidden = std::move(hidden);
   diagram.vertices.reserve(vertices.size());
   for (auto& [tie_set, vertex] : vertices) {
-    const auto exact = exact_point(vertex);
-    const std::array<double, 4> rounded = {to_nearest_double(exact[0]), to_nearest_double(exact[1]),
-                                           to_nearest_double(exact[2]), to_nearest_double(exact[3])};
+    const std::array<double, 4> rounded = rounded_coordinates(vertex);
     diagram.vertices.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
   }
   // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.

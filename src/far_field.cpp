@@ -23,6 +23,12 @@ struct Patch {
   int depth;
 };
 
+// a = p - O, |a|^2 and |a| of an escaping site.
+struct Offset {
+  std::array<Interval, 3> a;
+  Interval norm_squared, norm;
+};
+
 class Far_field {
  public:
   Far_field(const std::vector<Site>& sites, const std::vector<Site_index>& escaping, const std::array<double, 3>& origin,
@@ -33,7 +39,8 @@ class Far_field {
       Offset& o = offsets_[i];
       o.a = {Interval(sites[i].x) - Interval(origin[0]), Interval(sites[i].y) - Interval(origin[1]),
              Interval(sites[i].z) - Interval(origin[2])};
-      o.norm = CGAL::sqrt(CGAL::square(o.a[0]) + CGAL::square(o.a[1]) + CGAL::square(o.a[2]));
+      o.norm_squared = CGAL::square(o.a[0]) + CGAL::square(o.a[1]) + CGAL::square(o.a[2]);
+      o.norm = CGAL::sqrt(o.norm_squared);
     }
   }
 
@@ -45,20 +52,23 @@ class Far_field {
       const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
       const Interval S(p.s0, p.s1), T(p.t0, p.t1);
       const Interval norm = CGAL::sqrt(Interval(1) + CGAL::square(S) + CGAL::square(T));
-      auto support = [&](Site_index i) {
+      auto projection = [&](Site_index i) {  // u.a over the patch
         const auto& a = offsets_[i].a;
-        return (Interval(p.side) * a[p.axis] + S * a[first] + T * a[second]) / norm + Interval(sites_[i].w);
+        return (Interval(p.side) * a[p.axis] + S * a[first] + T * a[second]) / norm;
       };
       std::vector<Interval> support_of(candidates.size());
       std::size_t best = 0;
       for (std::size_t k = 0; k < candidates.size(); ++k) {
-        support_of[k] = support(candidates[k]);
+        support_of[k] = projection(candidates[k]) + Interval(sites_[candidates[k]].w);
         if (support_of[k].inf() > support_of[best].inf()) best = k;
       }
-      const Interval witness_offset = offsets_[candidates[best]].norm;
+      const Offset& witness = offsets_[candidates[best]];
+      const Interval witness_projection = projection(candidates[best]);
+      // q_j = |a_j|^2 - (u.a_j)^2 over the patch, at least 0.
+      const double witness_spread = std::max(0.0, (witness.norm_squared - CGAL::square(witness_projection)).sup());
       for (std::size_t k = 0; k < candidates.size(); ++k) {
         const Interval margin = Interval(support_of[best].inf()) - Interval(support_of[k].sup());
-        if (k == best || !(margin.inf() > 0) || !(leaves_within_radius(candidates[k], witness_offset, margin.inf())))
+        if (k == best || !(margin.inf() > 0) || !leaves_within_radius(witness, witness_spread, margin.inf()))
           kept.push_back(candidates[k]);
       }
     }
@@ -76,11 +86,10 @@ class Far_field {
   std::vector<Found_vertex> take_vertices() { return std::move(found_); }
 
  private:
-  // Whether site i, beaten by margin m by a witness at distance |a_j| from O, owns no point of the cone
-  // beyond the root box's inscribed ball: max(2|a_i|, 2|a_j|, 2|a_j|^2 / m) <= radius.
-  bool leaves_within_radius(Site_index i, const Interval& witness_offset, double margin) const {
-    const Interval beyond = Interval(2) * CGAL::square(witness_offset) / Interval(margin);
-    return std::max({(Interval(2) * offsets_[i].norm).sup(), (Interval(2) * witness_offset).sup(), beyond.sup()}) <= radius_;
+  // Whether a site beaten by margin m owns no point of the cone beyond the root box's inscribed ball:
+  // |a_j| + q_j / (2 m) <= radius, for the witness j.
+  bool leaves_within_radius(const Offset& witness, double witness_spread, double margin) const {
+    return (witness.norm + Interval(witness_spread) / (Interval(2) * Interval(margin))).sup() <= radius_;
   }
 
   // Every vertex outside the root box whose tie set lies among `candidates`, decided exactly against the
@@ -90,12 +99,6 @@ class Far_field {
     apollonius::decide_quadruples(sites_, candidates, escaping_, [&](const Vertex& v) { return !vertex_in_box(v, root_, closed); },
                                   found_, 0);
   }
-
-  // a = p - O and |a| for every escaping site.
-  struct Offset {
-    std::array<Interval, 3> a;
-    Interval norm;
-  };
 
   const std::vector<Site>& sites_;
   const std::vector<Site_index>& escaping_;

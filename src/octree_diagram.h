@@ -26,8 +26,17 @@
 
 namespace apollonius {
 
+// What the computation did, for --stats: wall times of the phases and the sizes they worked on.
+struct Octree_statistics {
+  double partition_seconds = 0, propagation_seconds = 0, refinement_seconds = 0, far_field_seconds = 0,
+         assembly_seconds = 0;
+  std::size_t seed_boxes = 0, seed_candidates = 0, escaping_sites = 0, boxes = 0, leaves = 0, leaf_candidates = 0,
+              quadruples = 0, distinct_quadruples = 0;
+};
+
 struct Octree_options {
   int threads = 1;
+  Octree_statistics* statistics = nullptr;  // filled in when not null
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

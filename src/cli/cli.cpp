@@ -112,12 +112,24 @@ void print_statistics(std::ostream& err, const std::vector<Predicate_statistics>
   for (const Predicate_statistics& s : stats) err << s.name << ' ' << s.evaluations << ' ' << s.exact_stages << '\n';
 }
 
+void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
+  err << "phase seconds\n"
+      << "partition " << s.partition_seconds << "\npropagation " << s.propagation_seconds << "\nrefinement "
+      << s.refinement_seconds << "\nfar_field " << s.far_field_seconds << "\nassembly " << s.assembly_seconds << '\n'
+      << "octree count\n"
+      << "seed_boxes " << s.seed_boxes << "\nseed_candidates " << s.seed_candidates << "\nescaping_sites "
+      << s.escaping_sites << "\nboxes " << s.boxes << "\nleaves " << s.leaves << "\nleaf_candidates "
+      << s.leaf_candidates << "\nquadruples " << s.quadruples << "\ndistinct_quadruples " << s.distinct_quadruples << '\n';
+}
+
 int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Vertices_command command = parse_vertices(args);
   const Site_input input = read_sites(command.input, command.read_options);
   reset_predicate_statistics();
-  Diagram diagram = command.brute_force ? brute_force_diagram(input.sites)
-                                        : octree_diagram(input.sites, Octree_options{command.threads});
+  Octree_statistics octree_statistics;
+  Diagram diagram = command.brute_force
+                        ? brute_force_diagram(input.sites)
+                        : octree_diagram(input.sites, Octree_options{command.threads, &octree_statistics});
   if (command.box) restrict_to_box(diagram, *command.box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
 
@@ -138,7 +150,10 @@ int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::o
       throw Usage_error(e.what());
     }
   }
-  if (command.stats) print_statistics(err, stats);
+  if (command.stats) {
+    print_statistics(err, stats);
+    if (!command.brute_force) print_octree_statistics(err, octree_statistics);
+  }
   return EXIT_OK;
 }
 

@@ -1,0 +1,21 @@
+// The printed coordinates of a vertex (SPEC section 4): the correctly rounded doubles of its exact x, y,
+// z and r. Nothing is decided from them.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "vertex.h"
+
+namespace apollonius {
+
+// x, y, z, r rounded to nearest (ties to even). A double-double evaluation with a certified error bound
+// (double_double_ball.h) settles almost every coordinate; the others are rounded exactly
+// (correct_rounding.h).
+std::array<double, 4> rounded_coordinates(const Vertex& v);
+
+// The double-double stage alone: the coordinates it can certify, nothing for the others. Exposed for
+// the tests, which check it against the exact rounding.
+std::array<std::optional<double>, 4> certified_roundings(const Vertex& v);
+
+}  // namespace apollonius

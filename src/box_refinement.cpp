@@ -1,0 +1,158 @@
+#include "box_refinement.h"
+
+#include <algorithm>
+
+#include "box_distance.h"
+#include "rounding_guard.h"
+#include "vertex_conflict.h"
+#include "vertex_in_box.h"
+
+namespace apollonius {
+namespace {
+
+// Paper section 5.2.1: a box with at most four candidates is decided.
+constexpr std::size_t kLeafCandidates = 6;
+// Each candidate is tested against this many of the best candidates at the box centre.
+constexpr std::size_t kWitnesses = 3;
+// Refining stops helping when the candidate count has not dropped for kStagnationLevels levels and the box
+// is tiny against its distance to every candidate centre (kTinyBox half-diagonals): refining cannot
+// separate candidates that tie at a point (a degenerate vertex) or along a curve. Boxes near site centres
+// are never settled this way. kMaxDepth bounds the depth for inputs near the double range.
+constexpr int kStagnationLevels = 4;
+constexpr double kTinyBox = 64;
+constexpr int kMaxDepth = 400;
+
+// Halves the axes at least half as long as the longest; no children if some such axis has no double
+// strictly inside it.
+std::vector<Axis_box> split(const Axis_box& box) {
+  double longest = 0;
+  for (int a = 0; a < 3; ++a) longest = std::max(longest, box.hi[a] - box.lo[a]);
+  std::array<double, 3> middle;
+  std::array<bool, 3> halve{};
+  for (int a = 0; a < 3; ++a) {
+    halve[a] = box.hi[a] - box.lo[a] >= longest / 2;
+    middle[a] = box.lo[a] + (box.hi[a] - box.lo[a]) / 2;
+    if (halve[a] && !(box.lo[a] < middle[a] && middle[a] < box.hi[a])) return {};
+  }
+  std::vector<Axis_box> children;
+  for (int corner = 0; corner < 8; ++corner) {
+    Axis_box child = box;
+    bool valid = true;
+    for (int a = 0; a < 3; ++a) {
+      const bool upper = corner >> a & 1;
+      if (!halve[a])
+        valid = valid && !upper;
+      else
+        (upper ? child.lo[a] : child.hi[a]) = middle[a];
+    }
+    if (valid) children.push_back(child);
+  }
+  return children;
+}
+
+}  // namespace
+
+void Box_refinement::find_vertices(const Axis_box& box, const std::vector<Site_index>& candidates,
+                                   std::vector<Found_vertex>& out) {
+  stack_.assign(candidates.begin(), candidates.end());
+  cache_.clear();
+  refine(box, 0, 0, 0, out);
+}
+
+Refinement_counts Box_refinement::counts() const {
+  Refinement_counts counts = counts_;
+  counts.quadruples = cache_.lookups();
+  counts.distinct_quadruples = cache_.misses();
+  return counts;
+}
+
+void Box_refinement::refine(const Axis_box& box, std::size_t first, int depth, int stagnant,
+                            std::vector<Found_vertex>& out) {
+  const std::size_t end = stack_.size();
+  ++counts_.boxes;
+  keep_undominated(box, first, end);
+  const std::size_t kept = stack_.size() - end;
+  if (kept >= 4) {
+    stagnant = kept == end - first ? stagnant + 1 : 0;
+    const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
+                         (stagnant >= kStagnationLevels && tiny_against_candidates(box, end));
+    const std::vector<Axis_box> children = settled ? std::vector<Axis_box>{} : split(box);
+    if (children.empty())
+      decide_leaf(box, end, out);
+    else
+      for (const Axis_box& child : children) refine(child, end, depth + 1, stagnant, out);
+  }
+  stack_.resize(end);
+}
+
+void Box_refinement::keep_undominated(const Axis_box& box, std::size_t first, std::size_t end) {
+  const Box_frame frame = frame_of(box);
+  const std::size_t count = end - first;
+  expansion_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) expansion_[k] = expand_at_centre(sites_[stack_[first + k]], frame);
+
+  // The witnesses: the usable candidates of least d at the centre, ascending. Only a witness closer at
+  // the centre can dominate a site on the box.
+  std::array<std::size_t, kWitnesses> witness;
+  std::size_t witnesses = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!expansion_[k].usable) continue;
+    const double d = expansion_[k].weighted;
+    std::size_t at = std::min(witnesses, kWitnesses);
+    for (; at > 0 && expansion_[witness[at - 1]].weighted > d; --at)
+      if (at < kWitnesses) witness[at] = witness[at - 1];
+    if (at < kWitnesses) witness[at] = k, witnesses = std::min(witnesses + 1, kWitnesses);
+  }
+  std::array<Witness_expansion, kWitnesses> at_witness;
+  for (std::size_t w = 0; w < witnesses; ++w) at_witness[w] = expand_witness(sites_[stack_[first + witness[w]]], frame);
+
+  for (std::size_t k = 0; k < count; ++k) {
+    const Site& s = sites_[stack_[first + k]];
+    bool dominated = false;
+    for (std::size_t w = 0; w < witnesses && !dominated && at_witness[w].weighted < expansion_[k].weighted; ++w)
+      dominated = expansion_dominates(sites_[stack_[first + witness[w]]], at_witness[w], s, expansion_[k], frame);
+    if (!dominated) stack_.push_back(stack_[first + k]);
+  }
+}
+
+bool Box_refinement::tiny_against_candidates(const Axis_box& box, std::size_t first) const {
+  Rounding_guard guard;
+  Interval scaled_half_diagonal_squared(0);
+  for (int a = 0; a < 3; ++a)
+    scaled_half_diagonal_squared += CGAL::square((Interval(box.hi[a]) - Interval(box.lo[a])) * Interval(kTinyBox / 2));
+  return std::all_of(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end(), [&](Site_index s) {
+    return (squared_distance_to_box<Interval>(sites_[s], box) - scaled_half_diagonal_squared).inf() > 0;
+  });
+}
+
+void Box_refinement::decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
+  const std::size_t k = stack_.size() - first, leaf_start = out.size();
+  ++counts_.leaves;
+  counts_.leaf_candidates += k;
+  const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
+  const Site_index* leaf = stack_.data() + first;
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = a + 1; b < k; ++b)
+      for (std::size_t c = b + 1; c < k; ++c)
+        for (std::size_t d = c + 1; d < k; ++d) {
+          std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
+          std::sort(quadruple.begin(), quadruple.end());
+          for (const Vertex& v : cache_.vertices_of_quadruple(quadruple, sites_).vertices) {
+            if (!vertex_in_box(v, box, closed_above)) continue;
+            // The candidates include every owner of the vertex: its tie set is among them.
+            tie_.assign(quadruple.begin(), quadruple.end());
+            bool closer = false;
+            for (std::size_t o = 0; o < k && !closer; ++o) {
+              if (o == a || o == b || o == c || o == d) continue;
+              const Sign sign = vertex_conflict(v, sites_[leaf[o]]);
+              closer = sign == Sign::NEGATIVE;
+              if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
+            }
+            if (closer) continue;
+            std::sort(tie_.begin(), tie_.end());
+            append_unique(out, leaf_start, {tie_, v});
+          }
+        }
+}
+
+}  // namespace apollonius
