@@ -8,6 +8,12 @@
 
 namespace apollonius {
 
+std::array<double, 4> rounded_point(const Vertex& v) {
+  const auto exact = exact_point(v);
+  return {to_nearest_double(exact[0]), to_nearest_double(exact[1]), to_nearest_double(exact[2]),
+          to_nearest_double(exact[3])};
+}
+
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
                          std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices) {
   Diagram diagram;
@@ -15,9 +21,7 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   diagram.hidden = std::move(hidden);
   diagram.vertices.reserve(vertices.size());
   for (auto& [tie_set, vertex] : vertices) {
-    const auto exact = exact_point(vertex);
-    const std::array<double, 4> rounded = {to_nearest_double(exact[0]), to_nearest_double(exact[1]),
-                                           to_nearest_double(exact[2]), to_nearest_double(exact[3])};
+    const std::array<double, 4> rounded = rounded_point(vertex);
     diagram.vertices.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
   }
   // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.

@@ -35,6 +35,9 @@ struct Diagram {
   std::vector<Site_index> sites_without_vertex;
 };
 
+// The correctly rounded doubles of v's exact x, y, z, r: for output and reports, never for decisions.
+std::array<double, 4> rounded_point(const Vertex& v);
+
 // Keeps only the vertices whose centre lies in the closed box (exact).
 void restrict_to_box(Diagram& diagram, const Axis_box& box);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "correct_rounding.h"
+#include "diagram.h"
 #include "vertex.h"
 
 namespace apollonius::testing {
@@ -27,11 +28,6 @@ inline long double rounded_residual(const std::array<double, 4>& p, const Site& 
   const long double dx = static_cast<long double>(p[0]) - s.x, dy = static_cast<long double>(p[1]) - s.y,
                     dz = static_cast<long double>(p[2]) - s.z;
   return std::sqrt(dx * dx + dy * dy + dz * dz) - s.w - p[3];
-}
-
-inline std::array<double, 4> rounded_point(const Vertex& v) {
-  const auto p = exact_point(v);
-  return {to_nearest_double(p[0]), to_nearest_double(p[1]), to_nearest_double(p[2]), to_nearest_double(p[3])};
 }
 
 }  // namespace apollonius::testing
