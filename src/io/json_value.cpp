@@ -85,15 +85,25 @@ class Json_parser {
     return true;
   }
 
+  // open, then items separated by ',' (each read by parse_item), then close; no item is fine.
+  template <class Item>
+  void parse_sequence(char open, char close, const Item& parse_item) {
+    expect(open);
+    skip_whitespace();
+    if (peek() != close) {
+      for (;;) {
+        parse_item();
+        skip_whitespace();
+        if (peek() == close) break;
+        expect(',');
+      }
+    }
+    ++position_;
+  }
+
   void parse_object(Json_value& value, int depth) {
     value.kind = Json_value::Kind::object;
-    expect('{');
-    skip_whitespace();
-    if (peek() == '}') {
-      ++position_;
-      return;
-    }
-    for (;;) {
+    parse_sequence('{', '}', [&] {
       skip_whitespace();
       if (peek() != '"') fail("expected a key string" + found());
       std::string key = parse_string();
@@ -101,28 +111,12 @@ class Json_parser {
       skip_whitespace();
       expect(':');
       value.members.emplace_back(std::move(key), parse_value(depth));
-      skip_whitespace();
-      if (peek() == '}') break;
-      expect(',');
-    }
-    ++position_;
+    });
   }
 
   void parse_array(Json_value& value, int depth) {
     value.kind = Json_value::Kind::array;
-    expect('[');
-    skip_whitespace();
-    if (peek() == ']') {
-      ++position_;
-      return;
-    }
-    for (;;) {
-      value.elements.push_back(parse_value(depth));
-      skip_whitespace();
-      if (peek() == ']') break;
-      expect(',');
-    }
-    ++position_;
+    parse_sequence('[', ']', [&] { value.elements.push_back(parse_value(depth)); });
   }
 
   // -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?
