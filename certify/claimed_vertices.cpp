@@ -1,101 +1,171 @@
 #include "claimed_vertices.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <functional>
-#include <istream>
-#include <map>
-#include <sstream>
+#include <limits>
 
 #include "io/input_error.h"
+#include "io/json_value.h"
+#include "io/text_input.h"
 
 namespace apollonius {
 namespace {
 
-using Quadruple_key = std::array<Site_index, 4>;
+constexpr const char* kJsonFormatName = "apollonius3d-vertices";
 
-// Every 4-subset of a sorted tie set, sorted.
-void for_each_quadruple(const std::vector<Site_index>& tie, const std::function<void(const Quadruple_key&)>& f) {
-  const std::size_t k = tie.size();
-  for (std::size_t a = 0; a < k; ++a)
-    for (std::size_t b = a + 1; b < k; ++b)
-      for (std::size_t c = b + 1; c < k; ++c)
-        for (std::size_t d = c + 1; d < k; ++d) f({tie[a], tie[b], tie[c], tie[d]});
+// Sorts the sites of a claim and checks the invariant of Claimed_vertex.
+void check_sites(std::vector<Site_index>& sites, std::size_t site_count, const std::string& name, std::size_t line) {
+  if (sites.size() < 4)
+    throw Input_error(name, line, "a vertex needs 4 or more site indices, found " + std::to_string(sites.size()));
+  for (const Site_index site : sites)
+    if (site >= site_count)
+      throw Input_error(name, line, "site index " + std::to_string(site) + " out of range (the input has " +
+                                        std::to_string(site_count) + " sites)");
+  std::sort(sites.begin(), sites.end());
+  if (const auto repeated = std::adjacent_find(sites.begin(), sites.end()); repeated != sites.end())
+    throw Input_error(name, line, "site index " + std::to_string(*repeated) + " listed twice");
 }
 
-double max_abs_difference(const std::array<double, 4>& x, const std::array<double, 4>& y) {
-  double m = 0;
-  for (int j = 0; j < 4; ++j) m = std::max(m, std::fabs(x[j] - y[j]));
-  return m;
+Site_index parse_site_index(std::string_view field, const std::string& name, std::size_t line) {
+  Site_index index = 0;
+  if (!parse_integer(field, index)) throw Input_error(name, line, "not a site index: '" + std::string(field) + "'");
+  return index;
 }
 
-}  // namespace
+// One line of text or Voronota output: index_count site indices, then x y z r.
+Claimed_vertex parse_line(const std::vector<std::string_view>& fields, std::size_t index_count, std::size_t site_count,
+                          const std::string& name, std::size_t line) {
+  Claimed_vertex claim;
+  claim.line = line;
+  for (std::size_t i = 0; i < index_count; ++i) claim.sites.push_back(parse_site_index(fields[i], name, line));
+  for (std::size_t j = 0; j < 4; ++j) claim.point[j] = parse_number(fields[index_count + j], name, line, Infinity::allowed);
+  check_sites(claim.sites, site_count, name, line);
+  return claim;
+}
 
-std::vector<Claimed_vertex> read_claimed_vertices(std::istream& in, const std::string& name) {
+std::vector<Claimed_vertex> read_text(const std::vector<Text_line>& lines, std::size_t site_count, const std::string& name) {
   std::vector<Claimed_vertex> claims;
-  std::string text;
-  for (std::size_t line = 1; std::getline(in, text); ++line) {
-    if (const auto hash = text.find('#'); hash != std::string::npos) text.erase(hash);
-    std::istringstream fields(text);
-    std::vector<std::string> tokens;
-    for (std::string t; fields >> t;) tokens.push_back(t);
-    if (tokens.empty()) continue;
-    if (tokens.size() < 8)
-      throw Input_error(name, line, "expected 4 or more site indices and x y z r, found " +
-                                        std::to_string(tokens.size()) + " fields");
+  for (const Text_line& line : lines) {
+    const std::vector<std::string_view> fields = data_fields(line.text);
+    if (fields.empty()) continue;
+    if (fields.size() < 8)
+      throw Input_error(name, line.number, "expected 4 or more site indices, then x y z r; found " +
+                                               std::to_string(fields.size()) + " fields");
+    claims.push_back(parse_line(fields, fields.size() - 4, site_count, name, line.number));
+  }
+  return claims;
+}
+
+std::vector<Claimed_vertex> read_voronota(const std::vector<Text_line>& lines, std::size_t site_count,
+                                          const std::string& name) {
+  std::vector<Claimed_vertex> claims;
+  for (const Text_line& line : lines) {
+    const std::vector<std::string_view> fields = data_fields(line.text);
+    if (fields.empty()) continue;
+    if (fields.size() != 8 && fields.size() != 12)
+      throw Input_error(name, line.number, "expected 'q1 q2 q3 q4 x y z r', with --link 4 more integers; found " +
+                                               std::to_string(fields.size()) + " fields");
+    for (std::size_t i = 8; i < fields.size(); ++i) {
+      long long link = 0;
+      if (!parse_integer(fields[i], link) || link < -1)
+        throw Input_error(name, line.number, "not a vertex link (an index or -1): '" + std::string(fields[i]) + "'");
+    }
+    claims.push_back(parse_line(fields, 4, site_count, name, line.number));
+  }
+  return claims;
+}
+
+// A JSON number, or the string "inf" or "-inf" that our writer prints for an overflowing coordinate.
+double json_coordinate(const Json_value& vertex, const char* key, const std::string& name) {
+  const Json_value* value = vertex.member(key);
+  if (value == nullptr) throw Input_error(name, vertex.line, std::string("vertex without \"") + key + "\"");
+  if (value->kind == Json_value::Kind::string && (value->text == "inf" || value->text == "-inf"))
+    return value->text == "inf" ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+  if (value->kind != Json_value::Kind::number)
+    throw Input_error(name, value->line, std::string("\"") + key + "\" must be a number, not " + describe(value->kind));
+  return parse_number(value->text, name, value->line);
+}
+
+std::vector<Claimed_vertex> read_json(const std::string& content, std::size_t site_count, const std::string& name) {
+  const Json_value document = parse_json(content, name);
+  if (document.kind != Json_value::Kind::object)
+    throw Input_error(name, document.line, std::string("expected a JSON object, found ") + describe(document.kind));
+  if (const Json_value* format = document.member("format");
+      format != nullptr && !(format->kind == Json_value::Kind::string && format->text == kJsonFormatName))
+    throw Input_error(name, format->line, std::string("\"format\" must be \"") + kJsonFormatName + "\"");
+  if (const Json_value* sites = document.member("sites"); sites != nullptr) {
+    std::size_t count = 0;
+    if (sites->kind != Json_value::Kind::number || !parse_integer(sites->text, count))
+      throw Input_error(name, sites->line, "\"sites\" must be a site count");
+    if (count != site_count)
+      throw Input_error(name, sites->line, "this vertex list is for " + std::to_string(count) +
+                                               " sites, the input has " + std::to_string(site_count));
+  }
+  const Json_value* vertices = document.member("vertices");
+  if (vertices == nullptr) throw Input_error(name, document.line, "no \"vertices\" array");
+  if (vertices->kind != Json_value::Kind::array)
+    throw Input_error(name, vertices->line, std::string("\"vertices\" must be an array, not ") + describe(vertices->kind));
+
+  std::vector<Claimed_vertex> claims;
+  for (const Json_value& vertex : vertices->elements) {
+    if (vertex.kind != Json_value::Kind::object)
+      throw Input_error(name, vertex.line, std::string("a vertex must be an object, not ") + describe(vertex.kind));
     Claimed_vertex claim;
-    claim.line = line;
-    for (std::size_t i = 0; i + 4 < tokens.size(); ++i) {
-      Site_index index = 0;
-      const auto [end, error] = std::from_chars(tokens[i].data(), tokens[i].data() + tokens[i].size(), index);
-      if (error != std::errc() || end != tokens[i].data() + tokens[i].size())
-        throw Input_error(name, line, "not a site index: '" + tokens[i] + "'");
-      claim.sites.push_back(index);
+    claim.line = vertex.line;
+    const Json_value* sites = vertex.member("sites");
+    if (sites == nullptr || sites->kind != Json_value::Kind::array)
+      throw Input_error(name, vertex.line, "vertex without a \"sites\" array");
+    for (const Json_value& site : sites->elements) {
+      if (site.kind != Json_value::Kind::number) throw Input_error(name, site.line, "not a site index: " + std::string(describe(site.kind)));
+      claim.sites.push_back(parse_site_index(site.text, name, site.line));
     }
-    for (int j = 0; j < 4; ++j) {
-      const std::string& t = tokens[tokens.size() - 4 + j];
-      const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), claim.point[j]);
-      if (error != std::errc() || end != t.data() + t.size() || !std::isfinite(claim.point[j]))
-        throw Input_error(name, line, "not a finite number: '" + t + "'");
-    }
-    std::sort(claim.sites.begin(), claim.sites.end());
+    const char* const keys[4] = {"x", "y", "z", "r"};
+    for (int j = 0; j < 4; ++j) claim.point[j] = json_coordinate(vertex, keys[j], name);
+    check_sites(claim.sites, site_count, name, vertex.line);
     claims.push_back(std::move(claim));
   }
   return claims;
 }
 
-Vertex_list_matching match_claims(const Diagram& diagram, const std::vector<Claimed_vertex>& claims) {
-  std::map<Quadruple_key, std::vector<std::size_t>> vertices_of_quadruple;
-  for (std::size_t v = 0; v < diagram.vertices.size(); ++v)
-    for_each_quadruple(diagram.vertices[v].tie_set, [&](const Quadruple_key& q) { vertices_of_quadruple[q].push_back(v); });
+}  // namespace
 
-  Vertex_list_matching result;
-  std::vector<bool> claimed(diagram.vertices.size(), false);
-  for (std::size_t c = 0; c < claims.size(); ++c) {
-    const Claimed_vertex& claim = claims[c];
-    const Quadruple_key key = {claim.sites[0], claim.sites[1], claim.sites[2], claim.sites[3]};
-    const auto found = vertices_of_quadruple.find(key);
-    std::size_t best = diagram.vertices.size();
-    double best_error = INFINITY;
-    if (found != vertices_of_quadruple.end()) {
-      for (std::size_t v : found->second) {
-        const auto& tie = diagram.vertices[v].tie_set;
-        if (!std::includes(tie.begin(), tie.end(), claim.sites.begin(), claim.sites.end())) continue;
-        const double error = max_abs_difference(claim.point, diagram.vertices[v].rounded);
-        if (error < best_error) best = v, best_error = error;
-      }
-    }
-    if (best == diagram.vertices.size()) {
-      result.unmatched_claims.push_back(c);
-    } else {
-      result.matches.push_back({c, best, best_error});
-      claimed[best] = true;
-    }
+const char* name_of(Claim_format format) {
+  switch (format) {
+    case Claim_format::text: return "text";
+    case Claim_format::json: return "json";
+    case Claim_format::voronota: return "voronota";
   }
-  for (std::size_t v = 0; v < diagram.vertices.size(); ++v)
-    if (!claimed[v]) result.vertices_without_claim.push_back(v);
-  return result;
+  return "unknown";
+}
+
+std::optional<Claim_format> claim_format_from_name(const std::string& name) {
+  for (const Claim_format format : {Claim_format::text, Claim_format::json, Claim_format::voronota})
+    if (name == name_of(format)) return format;
+  return std::nullopt;
+}
+
+Claim_format detect_claim_format(const std::string& content) {
+  const std::size_t first = content.find_first_not_of(" \t\r\n\f\v");
+  if (first != std::string::npos && content[first] == '{') return Claim_format::json;
+  for (const Text_line& line : split_lines(content)) {
+    const std::vector<std::string_view> fields = data_fields(line.text);
+    if (fields.empty()) continue;
+    return fields.size() == 12 && !is_integer(fields[4]) ? Claim_format::voronota : Claim_format::text;
+  }
+  return Claim_format::text;
+}
+
+Claimed_vertex_list read_claimed_vertices(const std::string& content, const std::string& name,
+                                          std::optional<Claim_format> format, std::size_t site_count) {
+  reject_binary_data(content, name);
+  Claimed_vertex_list list;
+  list.format = format ? *format : detect_claim_format(content);
+  switch (list.format) {
+    case Claim_format::json: list.vertices = read_json(content, site_count, name); break;
+    case Claim_format::voronota: list.vertices = read_voronota(split_lines(content), site_count, name); break;
+    case Claim_format::text: list.vertices = read_text(split_lines(content), site_count, name); break;
+  }
+  return list;
 }
 
 }  // namespace apollonius

@@ -1,41 +1,49 @@
-// Another implementation's vertex list, and how it lines up with the exact diagram. This is the matching
-// core of `certify` (judgement of each claim, with verdicts and reports, comes with the certify issue).
+// Another implementation's vertex list, the CLAIM that `certify` judges, in one of three formats:
+// - text: our `vertices` output, one vertex a line: 4 or more site indices, then x y z r;
+// - json: our `vertices --format json` output (the "vertices" array; other members are ignored);
+// - voronota: `voronota calculate-vertices` output, `q1 q2 q3 q4 x y z r`, with `--link` followed by 4
+//   more integers (the neighbouring vertices' line numbers, -1 for none), which are checked and ignored.
+// Plain Voronota output is also valid text, with the same meaning.
 #pragma once
 
 #include <array>
-#include <iosfwd>
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "diagram.h"
+#include "site.h"
 
 namespace apollonius {
 
-// One line of a claimed vertex list: our text format or Voronota's calculate-vertices output, i.e. 4 or
-// more site indices (0-based) followed by x y z r.
+enum class Claim_format { text, json, voronota };
+
+const char* name_of(Claim_format format);
+std::optional<Claim_format> claim_format_from_name(const std::string& name);
+
+// Invariant: sites ascending, distinct, 4 or more, each below the input's site count; point is never NaN
+// (it may be infinite: our writers print coordinates that overflow as inf).
 struct Claimed_vertex {
-  std::vector<Site_index> sites;  // ascending
-  std::array<double, 4> point;
-  std::size_t line;
+  std::vector<Site_index> sites;
+  std::array<double, 4> point;  // x, y, z, r as claimed
+  std::size_t line;             // 1-based line of the claim in its file
 };
 
-// Throws Input_error (file, line, reason) on a malformed line.
-std::vector<Claimed_vertex> read_claimed_vertices(std::istream& in, const std::string& name);
-
-// A claim represents a diagram vertex when its sites are a subset of the vertex's tie set; among the
-// vertices it could represent (two roots of one quadruple), the nearest one in coordinates is chosen.
-// Invariant: every claim index appears in exactly one of matches or unmatched_claims.
-struct Vertex_list_matching {
-  struct Match {
-    std::size_t claim;
-    std::size_t vertex;  // index into Diagram::vertices
-    double max_abs_error;  // max |claimed - rounded exact| over x, y, z, r
-  };
-  std::vector<Match> matches;
-  std::vector<std::size_t> unmatched_claims;
-  std::vector<std::size_t> vertices_without_claim;
+struct Claimed_vertex_list {
+  Claim_format format;  // as given, or as detected
+  std::vector<Claimed_vertex> vertices;
 };
 
-Vertex_list_matching match_claims(const Diagram& diagram, const std::vector<Claimed_vertex>& claims);
+// The format of content by its first data: '{' means json; a first line of 12 fields whose fifth is not
+// an integer is Voronota's --link output (in text, the fifth field of a 12-field line is a site index,
+// while Voronota prints every coordinate with a decimal point); anything else is text.
+Claim_format detect_claim_format(const std::string& content);
+
+// Reads a claimed vertex list for an input of site_count sites; with no format given, detects it.
+// Site indices may come in any order. Throws Input_error (name, line, reason) for anything malformed:
+// wrong field counts, non-numbers, NaN, a repeated or out-of-range site index, fewer than 4 sites,
+// binary data, a JSON list made for a different number of sites. An empty list is valid.
+Claimed_vertex_list read_claimed_vertices(const std::string& content, const std::string& name,
+                                          std::optional<Claim_format> format, std::size_t site_count);
 
 }  // namespace apollonius

@@ -30,7 +30,7 @@ inline void validate_diagram(const Diagram& d, const std::vector<Site>& sites) {
       CHECK(vertex_conflict(v.vertex, sites[s]) == (tied ? Sign::ZERO : Sign::POSITIVE));
     }
     // Printed values are the correct roundings of the exact point.
-    CHECK(rounded_point(v.vertex) == v.rounded);
+    CHECK(exactly_rounded_point(v.vertex) == v.rounded);
     if (i > 0) {
       const Diagram_vertex& u = d.vertices[i - 1];
       const bool ordered = u.tie_set < v.tie_set ||

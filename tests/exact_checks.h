@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "correct_rounding.h"
+#include "diagram.h"
 #include "vertex.h"
 
 namespace apollonius::testing {
@@ -29,7 +30,9 @@ inline long double rounded_residual(const std::array<double, 4>& p, const Site& 
   return std::sqrt(dx * dx + dy * dy + dz * dz) - s.w - p[3];
 }
 
-inline std::array<double, 4> rounded_point(const Vertex& v) {
+// The correctly rounded point by the exact path alone (to_nearest_double): the oracle for the printed
+// values, independent of the double-double stage of rounded_coordinates.
+inline std::array<double, 4> exactly_rounded_point(const Vertex& v) {
   const auto p = exact_point(v);
   return {to_nearest_double(p[0]), to_nearest_double(p[1]), to_nearest_double(p[2]), to_nearest_double(p[3])};
 }

@@ -2,56 +2,17 @@
 // reason, exit code 2, no output file).
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "cli/cli.h"
+#include "cli_helpers.h"
 
 using namespace apollonius;
+using namespace apollonius::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Cli_result {
-  int code;
-  std::string out, err;
-};
-
-Cli_result run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
-
-// A scratch directory for one test, removed afterwards.
-struct Scratch {
-  fs::path dir;
-  Scratch() : dir(fs::temp_directory_path() / ("apollonius_cli_" + std::to_string(::getpid()))) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() { fs::remove_all(dir); }
-  std::string write(const std::string& name, const std::string& content) const {
-    std::ofstream(dir / name, std::ios::binary) << content;
-    return (dir / name).string();
-  }
-  std::string path(const std::string& name) const { return (dir / name).string(); }
-};
-
-// Runs the real binary through the shell; returns the exit code and standard output.
-std::pair<int, std::string> shell(const std::string& command) {
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
 
 const std::string kTetrahedron = "1 1 1 1\n1 -1 -1 1\n-1 1 -1 1\n-1 -1 1 1\n";
 

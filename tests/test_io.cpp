@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/json_value.h"
 #include "io/read_sites.h"
 #include "io/read_structure.h"
 #include "io/write_vertices.h"
@@ -354,4 +355,37 @@ TEST_CASE("vertex writers: non-finite values and empty lists") {
   write_vertices_json(json, diagram, nullptr);
   CHECK(json.str().find("\"x\": \"inf\", \"y\": \"-inf\", \"z\": 1.0000000000000001e+300") != std::string::npos);
   CHECK(json.str().find("\"hidden_sites\": [],\n  \"sites_without_vertex\": []\n}") != std::string::npos);
+}
+
+TEST_CASE("JSON: every kind of value, escapes, number literals kept as text, the line of each value") {
+  const Json_value v = parse_json("{\"a\": [1, -0.5e-3, true, false, null],\n \"s\": \"q\\\"\\\\\\/\\n\\u00e9\\ud83d\\ude00\",\n\n \"o\": {}}", "j");
+  REQUIRE(v.kind == Json_value::Kind::object);
+  const Json_value* a = v.member("a");
+  REQUIRE(a != nullptr);
+  REQUIRE(a->elements.size() == 5);
+  CHECK(a->elements[0].text == "1");
+  CHECK(a->elements[1].text == "-0.5e-3");
+  CHECK(a->elements[2].text == "true");
+  CHECK(a->elements[3].text == "false");
+  CHECK(a->elements[4].kind == Json_value::Kind::null);
+  CHECK(v.member("s")->text == "q\"\\/\n\u00e9\U0001F600");
+  CHECK(v.member("s")->line == 2);
+  CHECK(v.member("o")->line == 4);
+  CHECK(v.member("o")->members.empty());
+  CHECK(v.member("missing") == nullptr);
+}
+
+TEST_CASE("JSON: malformed documents name their line") {
+  for (const auto& [text, line] : std::vector<std::pair<std::string, std::size_t>>{
+           {"", 1}, {"{\n\"a\": 01}", 2}, {"[1.]", 1}, {"[-]", 1}, {"[1e]", 1}, {"[1,\n]", 2}, {"{\"a\" 1}", 1},
+           {"[\"a\nb\"]", 1}, {"[\"\\x\"]", 1}, {"[\"\\ud800\"]", 1}, {"[tru]", 1}, {"{}\n{}", 2}, {"[\"open", 1}}) {
+    CAPTURE(text);
+    try {
+      parse_json(text, "bad.json");
+      FAIL("no Input_error");
+    } catch (const Input_error& e) {
+      CHECK(e.file() == "bad.json");
+      CHECK(e.line() == line);
+    }
+  }
 }

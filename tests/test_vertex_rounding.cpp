@@ -35,7 +35,7 @@ TEST_CASE("the double-double stage agrees with the exact rounding wherever it an
       const std::vector<Site> sites = generate_sites(site_family_from_name(name), 5 + seed % 8, seed);
       for (const Diagram_vertex& v : brute_force_diagram(sites).vertices) {
         for (const Vertex& w : vertices_of(v.vertex.quadruple()).vertices) {
-          const std::array<double, 4> exact = rounded_point(w);
+          const std::array<double, 4> exact = exactly_rounded_point(w);
           const std::array<std::optional<double>, 4> fast = certified_roundings(w);
           for (int j = 0; j < 4; ++j) {
             CAPTURE(j);
@@ -80,7 +80,7 @@ TEST_CASE("vertices far from the double range's middle are rounded exactly") {
       const std::vector<Site> sites = generate_sites(family, 8, seed);
       for (const Diagram_vertex& v : brute_force_diagram(sites).vertices) {
         const Vertex fresh = fresh_copy(v.vertex);
-        CHECK(rounded_coordinates(fresh) == rounded_point(fresh));
+        CHECK(rounded_coordinates(fresh) == exactly_rounded_point(fresh));
       }
     }
   }

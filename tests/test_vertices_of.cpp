@@ -8,6 +8,7 @@
 #include "is_hidden.h"
 #include "rounding_guard.h"
 #include "vertex_conflict.h"
+#include "vertex_rounding.h"
 #include "vertices_of.h"
 
 using namespace apollonius;
@@ -73,7 +74,7 @@ TEST_CASE("a non-coplanar quadruple with two valid roots") {
   CHECK(result.vertices[1].root() == Root::PLUS);
   for (const Vertex& v : result.vertices) {
     check_own_sites_tie(v);
-    const auto p = rounded_point(v);
+    const auto p = rounded_coordinates(v);
     for (const Site& site : s) CHECK(std::fabs(static_cast<double>(rounded_residual(p, site))) < 1e-12);
   }
 }

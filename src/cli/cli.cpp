@@ -1,7 +1,5 @@
 #include "cli/cli.h"
 
-#include <charconv>
-#include <cmath>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -9,6 +7,8 @@
 #include <stdexcept>
 
 #include "brute_force_diagram.h"
+#include "certify_command.h"
+#include "cli/arguments.h"
 #include "octree_diagram.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -19,18 +19,18 @@
 namespace apollonius {
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kVerticesUsage =
     "usage: apollonius3d vertices INPUT [-o OUT] [--format text|json] [--algorithm octree|brute]\n"
     "                             [--threads N] [--box X0 Y0 Z0 X1 Y1 Z1] [--stats]\n"
     "                             [--keep-hydrogens] [--keep-waters]\n"
     "  INPUT: balls text 'x y z w', vdrc .txt, PDB/mmCIF (optionally .gz), or - for stdin\n"
     "  Prints every vertex of the Apollonius diagram in R^3 (or in the closed --box): its tie-set site\n"
-    "  indices (0-based), then x y z r. --algorithm brute is the O(n^5) reference.\n"
-    "exit codes: 0 ok, 2 usage or input error, 3 internal error\n";
+    "  indices (0-based), then x y z r. --algorithm brute is the O(n^5) reference.\n";
 
-struct Usage_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+constexpr const char* kExitCodes =
+    "exit codes: 0 ok, 1 certify found discrepancies, 2 usage or input error, 3 internal error\n";
+
+void print_usage(std::ostream& out) { out << kVerticesUsage << certify_usage << kExitCodes; }
 
 struct Vertices_command {
   std::string input;
@@ -44,56 +44,39 @@ struct Vertices_command {
   Read_options read_options;
 };
 
-double parse_number(const std::string& text, const std::string& option) {
-  double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-    throw Usage_error("option " + option + " needs finite numbers, not '" + text + "'");
-  return value;
-}
-
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 Vertices_command parse_vertices(const std::vector<std::string>& args) {
   Vertices_command command;
-  auto value_of = [&](std::size_t& i) -> const std::string& {
-    if (i + 1 >= args.size()) throw Usage_error("option " + args[i] + " needs a value");
-    return args[++i];
-  };
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output") {
-      command.output = value_of(i);
+      command.output = option_value(args, i);
     } else if (a == "--format") {
-      command.format = value_of(i);
+      command.format = option_value(args, i);
       command.format_given = true;
       if (command.format != "text" && command.format != "json")
         throw Usage_error("unknown format '" + command.format + "' (text or json)");
     } else if (a == "--algorithm") {
-      const std::string& algorithm = value_of(i);
+      const std::string& algorithm = option_value(args, i);
       if (algorithm != "brute" && algorithm != "octree")
         throw Usage_error("unknown algorithm '" + algorithm + "' (octree or brute)");
       command.brute_force = algorithm == "brute";
     } else if (a == "--threads") {
-      const double threads = parse_number(value_of(i), a);
-      if (threads < 1 || threads > 1024 || threads != std::floor(threads))
-        throw Usage_error("option --threads needs an integer from 1 to 1024");
-      command.threads = static_cast<int>(threads);
+      command.threads = parse_threads(option_value(args, i));
     } else if (a == "--box") {
       if (i + 6 >= args.size()) throw Usage_error("option --box needs 6 numbers X0 Y0 Z0 X1 Y1 Z1");
       Axis_box box;
-      for (int k = 0; k < 6; ++k) (k < 3 ? box.lo[k] : box.hi[k - 3]) = parse_number(args[++i], a);
+      for (int k = 0; k < 6; ++k) (k < 3 ? box.lo[k] : box.hi[k - 3]) = parse_option_number(args[++i], a);
       for (int k = 0; k < 3; ++k)
         if (!(box.lo[k] <= box.hi[k])) throw Usage_error("option --box needs X0 <= X1, Y0 <= Y1, Z0 <= Z1");
       command.box = box;
     } else if (a == "--stats") {
       command.stats = true;
-    } else if (a == "--keep-hydrogens") {
-      command.read_options.keep_hydrogens = true;
-    } else if (a == "--keep-waters") {
-      command.read_options.keep_waters = true;
+    } else if (parse_read_option(a, command.read_options)) {
+      // --keep-hydrogens, --keep-waters: recorded in read_options
     } else if (a.size() > 1 && a[0] == '-') {
       throw Usage_error("unknown option '" + a + "'");
     } else if (command.input.empty()) {
@@ -163,13 +146,15 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   try {
     if (args.empty()) throw Usage_error("missing command");
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-      out << kUsage;
+      print_usage(out);
       return EXIT_OK;
     }
     if (args[0] == "vertices") return run_vertices(args, out, err);
+    if (args[0] == "certify") return run_certify(args, err);
     throw Usage_error("unknown command '" + args[0] + "'");
   } catch (const Usage_error& e) {
-    err << "apollonius3d: " << e.what() << '\n' << kUsage;
+    err << "apollonius3d: " << e.what() << '\n';
+    print_usage(err);
     return EXIT_BAD_INPUT;
   } catch (const Input_error& e) {
     err << "apollonius3d: " << e.what() << '\n';

@@ -1,61 +1,10 @@
 #include "io/write_vertices.h"
 
-#include <cmath>
-#include <cstdio>
 #include <string>
 
+#include "io/json_output.h"
+
 namespace apollonius {
-
-namespace {
-
-// %.17g: 17 significant digits read back as the same double.
-std::string round_trip(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
-std::string json_number(double value) {
-  if (std::isfinite(value)) return round_trip(value);
-  return "\"" + round_trip(value) + "\"";
-}
-
-std::string json_string(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      quoted += '\\';
-      quoted += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escape[8];
-      std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
-      quoted += escape;
-    } else {
-      quoted += c;
-    }
-  }
-  return quoted + "\"";
-}
-
-template <class Integers>
-std::string json_array(const Integers& values) {
-  std::string array = "[";
-  for (const auto value : values) {
-    if (array.size() > 1) array += ", ";
-    array += std::to_string(value);
-  }
-  return array + "]";
-}
-
-// Elements one per line between "[" and "]", separated by commas, element(i) giving the i-th.
-template <class Element>
-void write_json_lines(std::ostream& out, std::size_t count, const Element& element) {
-  out << "[";
-  for (std::size_t i = 0; i < count; ++i) out << (i == 0 ? "\n    " : ",\n    ") << element(i);
-  out << (count == 0 ? "]" : "\n  ]");
-}
-
-}  // namespace
 
 void write_vertices_text(std::ostream& out, const Diagram& diagram) {
   std::string line;
@@ -73,9 +22,7 @@ void write_vertices_json(std::ostream& out, const Diagram& diagram, const std::v
       << ",\n  \"vertices\": ";
   write_json_lines(out, diagram.vertices.size(), [&](std::size_t i) {
     const Diagram_vertex& v = diagram.vertices[i];
-    return "{\"sites\": " + json_array(v.tie_set) + ", \"x\": " + json_number(v.rounded[0]) +
-           ", \"y\": " + json_number(v.rounded[1]) + ", \"z\": " + json_number(v.rounded[2]) +
-           ", \"r\": " + json_number(v.rounded[3]) + "}";
+    return "{\"sites\": " + json_array(v.tie_set) + ", " + json_point_members(v.rounded) + "}";
   });
   out << ",\n  \"hidden_sites\": ";
   write_json_lines(out, diagram.hidden.size(), [&](std::size_t i) {

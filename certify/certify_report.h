@@ -1,0 +1,30 @@
+// What `certify` tells: the full JSON report (schema in certify/README.md) and a short human summary.
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+
+#include "claimed_vertices.h"
+#include "diagram.h"
+#include "judge_claims.h"
+
+namespace apollonius {
+
+// One certification and what it was made of; the references are the caller's.
+struct Certify_report {
+  std::string input_name;
+  std::string claim_name;
+  const Diagram& diagram;
+  const Claimed_vertex_list& claims;
+  const Certification& certification;
+  bool strict;
+};
+
+// Every claim with its verdict and details, every missing vertex, the counts.
+void write_certify_report_json(std::ostream& out, const Certify_report& report);
+
+// The counts per verdict and the first `listed` discrepancies, one line each, claims as FILE:LINE.
+void write_certify_summary(std::ostream& out, const Certify_report& report, std::size_t listed = 10);
+
+}  // namespace apollonius
