@@ -4,16 +4,11 @@
 #include <cstdio>
 #include <string>
 
+#include "io/round_trip.h"
+
 namespace apollonius {
 
 namespace {
-
-// %.17g: 17 significant digits read back as the same double.
-std::string round_trip(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
 
 std::string json_number(double value) {
   if (std::isfinite(value)) return round_trip(value);
