@@ -117,6 +117,8 @@ TEST_CASE("bad input: file:line and reason, exit code 2, no output file") {
       {"empty file", "", "bad.txt"},
       {"binary garbage", nul, "bad.txt:2:"},
       {"PDB with no atoms", "HEADER    NOTHING HERE\nEND\n", "bad.txt"},
+      {"PDB with a NaN coordinate", "ATOM      1  N   ASP A   1         nan -17.809  25.188  1.00 34.37           N\n",
+       "bad.txt: not a finite coordinate"},
   };
   for (const Case& c : cases) {
     CAPTURE(c.what);

@@ -1,5 +1,6 @@
 #include "io/read_structure.h"
 
+#include <cmath>
 #include <map>
 #include <regex>
 #include <stdexcept>
@@ -51,9 +52,19 @@ bool is_water(const std::string& residue_name) {
   return residue_name == "HOH" || residue_name == "WAT" || residue_name == "DOD" || residue_name == "H2O";
 }
 
+// gemmi reads "nan", "inf" and numbers beyond the double range as coordinates. They are bad input, as in
+// balls text: no algorithm may see them (GMP even raises SIGFPE on converting one). gemmi keeps no line
+// numbers, so the atom is named instead.
+void check_finite_position(const gemmi::Atom& atom, const gemmi::Residue& residue, const gemmi::Chain& chain,
+                           const std::string& name) {
+  if (std::isfinite(atom.pos.x) && std::isfinite(atom.pos.y) && std::isfinite(atom.pos.z)) return;
+  throw Input_error(name, 0, "not a finite coordinate: atom " + std::to_string(atom.serial) + " (" + atom.name +
+                                 " of " + residue.name + " " + residue.seqid.str() + ", chain " + chain.name + ")");
+}
+
 // The sites of one model, in file order. Of the alternate locations of an atom only the first one seen
 // is kept, so that each atom is one ball (one conformer); atoms without an altloc are always kept.
-std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options) {
+std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options, const std::string& name) {
   std::vector<Site> sites;
   std::map<std::string, char> first_altloc;  // keyed by chain, residue number and atom name
   for (const gemmi::Chain& chain : model.chains) {
@@ -65,6 +76,7 @@ std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& 
           const std::string key = chain.name + ' ' + residue.seqid.str() + ' ' + atom.name;
           if (first_altloc.emplace(key, atom.altloc).first->second != atom.altloc) continue;
         }
+        check_finite_position(atom, residue, chain, name);
         sites.push_back({atom.pos.x, atom.pos.y, atom.pos.z, van_der_waals_radius(atom.element.elem)});
       }
     }
@@ -132,7 +144,7 @@ std::vector<Site> read_structure(const std::string& path_or_name, const std::str
     throw input_error_from_gemmi(path_or_name, e.what());
   }
   std::vector<Site> sites;
-  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options);
+  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options, path_or_name);
   if (sites.empty()) throw Input_error(path_or_name, 0, "no atoms");
   return sites;
 }
