@@ -373,3 +373,12 @@ TEST_CASE("regression: gemmi_shift_of_negative_char") {
   const std::string file = std::string(APOLLONIUS_TEST_DATA) + "/regression/gemmi_shift_of_negative_char.txt";
   check_input_error([&] { read_sites(file, default_options); }, file, 2, "too short");
 }
+
+TEST_CASE("regression: gemmi_ssbond_overread") {
+  // Under AddressSanitizer (APOLLONIUS_SANITIZE, scripts/fuzz.sh) the over-read aborted; here the atom is read.
+  const std::string file = std::string(APOLLONIUS_TEST_DATA) + "/regression/gemmi_ssbond_overread.pdb";
+  const std::vector<Site> sites = read_sites(file, default_options).sites;
+  REQUIRE(sites.size() == 1);
+  CHECK(sites[0] == Site{1, 2, 3, 1.80});
+  CHECK(read_text(file_content(file)).sites == sites);  // the same by content
+}

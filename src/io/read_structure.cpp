@@ -1,10 +1,14 @@
 #include "io/read_structure.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <regex>
 #include <stdexcept>
+#include <string_view>
 
+#include <gemmi/fileutil.hpp>
 #include <gemmi/gz.hpp>
 #include <gemmi/mmread.hpp>
 
@@ -114,20 +118,54 @@ gemmi::PdbReadOptions pdb_read_options() {
   return options;
 }
 
+// Whether a line starts with the record name, in any case: gemmi's test (is_record_type), which compares
+// the first four characters only.
+bool starts_with_record(std::string_view line, std::string_view record) {
+  if (line.size() < 4) return false;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (std::toupper(static_cast<unsigned char>(line[i])) != record[i]) return false;
+  return true;
+}
+
+// gemmi 0.5.7 reads the distance of an SSBOND or LINK record (columns 74-78) from any such line longer
+// than 73 bytes, and so reads past the end of a line of 74 to 77 (regression/gemmi_ssbond_overread.pdb).
+// gemmi collects these records and CISPEP only for bonds, which no radius needs: they are blanked here,
+// their line breaks kept so that gemmi's line numbers stay right.
+std::string without_connection_records(std::string_view pdb) {
+  std::string kept;
+  kept.reserve(pdb.size());
+  for (std::size_t start = 0; start < pdb.size();) {
+    const std::size_t end = std::min(pdb.find('\n', start), pdb.size() - 1) + 1;  // past the line break
+    const std::string_view line = pdb.substr(start, end - start);
+    if (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK") || starts_with_record(line, "CISP"))
+      kept += line.back() == '\n' ? "\n" : "";
+    else
+      kept += line;
+    start = end;
+  }
+  return kept;
+}
+
+gemmi::Structure parse_pdb(std::string_view pdb, const std::string& name) {
+  const std::string text = without_connection_records(pdb);
+  return gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_read_options());
+}
+
 gemmi::Structure parse_structure(const std::string& path_or_name, const std::string* content) {
   if (content == nullptr) {
     gemmi::MaybeGzipped input(path_or_name);
     if (gemmi::coor_format_from_ext(input.basepath()) == gemmi::CoorFormat::Mmcif) {
       return gemmi::make_structure(gemmi::cif::read(input));
     }
-    return gemmi::read_pdb(input, pdb_read_options());
+    const gemmi::CharArray text = gemmi::read_into_buffer(input);
+    return parse_pdb(std::string_view(text.data(), text.size()), path_or_name);
   }
   // gemmi's own test: mmCIF if the first line that is not blank nor a '#' comment starts with "data_".
   const char* const begin = content->data();
   if (gemmi::coor_format_from_content(begin, begin + content->size()) == gemmi::CoorFormat::Mmcif) {
     return gemmi::make_structure(gemmi::cif::read_memory(content->data(), content->size(), path_or_name.c_str()));
   }
-  return gemmi::read_pdb_string(*content, path_or_name, pdb_read_options());
+  return parse_pdb(*content, path_or_name);
 }
 
 }  // namespace
