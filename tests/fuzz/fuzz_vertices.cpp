@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <limits>
@@ -116,6 +117,12 @@ bool same_diagram(const Diagram& a, const Diagram& b) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::vector<Site> sites;
   if (!decode_sites(data, size, sites)) return -1;  // not a valid input: keep it out of the corpus
+  // To turn a kept input into a balls file: APOLLONIUS_FUZZ_PRINT_SITES=1 fuzz_vertices FILE.
+  static const bool print_sites = std::getenv("APOLLONIUS_FUZZ_PRINT_SITES") != nullptr;
+  if (print_sites) {
+    apollonius::write_sites_text(std::cout, sites, "fuzz_vertices input");
+    std::cout.flush();  // before a computation that may not return
+  }
   const Diagram reference = apollonius::brute_force_diagram(sites);
   Diagram octree;
   try {
