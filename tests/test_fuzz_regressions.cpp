@@ -36,3 +36,7 @@ void check_octree_equals_brute_force(const std::string& name) {
 TEST_CASE("regression: octree_far_field_stalls_beyond_2e154" * doctest::skip()) {
   check_octree_equals_brute_force("octree_far_field_stalls_beyond_2e154.balls");
 }
+
+TEST_CASE("regression: octree_far_field_slow_for_far_vertices") {
+  check_octree_equals_brute_force("octree_far_field_slow_for_far_vertices.balls");
+}
