@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs every build, test and benchmark dependency from Debian's packages. Idempotent: a second run
-# only checks that the packages are present.
+# Installs every build, test and benchmark dependency from Debian's packages; with --fuzz also clang and
+# libFuzzer (in Debian's compiler-rt package) for scripts/fuzz.sh. Idempotent: a second run only checks
+# that the packages are present.
 set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
@@ -8,6 +9,7 @@ packages=(
   doctest-dev gemmi-dev tao-pegtl-dev zlib1g-dev libtbb-dev
   voronota time
 )
+if [ "${1:-}" = "--fuzz" ]; then packages+=(clang libclang-rt-dev); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

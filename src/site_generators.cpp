@@ -1,7 +1,9 @@
 #include "site_generators.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 namespace apollonius {
@@ -26,11 +28,14 @@ class Random {
   std::uint64_t state_;
 };
 
-const Site_family kFamilies[] = {Site_family::uniform,  Site_family::equal_weights, Site_family::lattice,
-                                 Site_family::coplanar, Site_family::collinear,     Site_family::nested,
-                                 Site_family::tangent,  Site_family::mixed_sign,    Site_family::duplicates,
-                                 Site_family::cospherical, Site_family::scaled_up,  Site_family::scaled_down,
-                                 Site_family::lattice_noise, Site_family::far_vertices};
+// name_of indexes kSiteFamilies by the enum's value: the table must list every family, in enum order.
+constexpr bool lists_every_family_in_enum_order() {
+  std::size_t i = 0;
+  for (const Site_family_description& d : kSiteFamilies)
+    if (static_cast<std::size_t>(d.family) != i++) return false;
+  return i == static_cast<std::size_t>(Site_family::far_vertices) + 1;
+}
+static_assert(lists_every_family_in_enum_order());
 
 Site random_site(Random& random, long extent, double min_weight, double max_weight) {
   return {random.eighths(-extent, extent), random.eighths(-extent, extent), random.eighths(-extent, extent),
@@ -39,38 +44,20 @@ Site random_site(Random& random, long extent, double min_weight, double max_weig
 
 }  // namespace
 
-const char* name_of(Site_family family) {
-  switch (family) {
-    case Site_family::uniform: return "uniform";
-    case Site_family::equal_weights: return "equal-weights";
-    case Site_family::lattice: return "lattice";
-    case Site_family::coplanar: return "coplanar";
-    case Site_family::collinear: return "collinear";
-    case Site_family::nested: return "nested";
-    case Site_family::tangent: return "tangent";
-    case Site_family::mixed_sign: return "mixed-sign";
-    case Site_family::duplicates: return "duplicates";
-    case Site_family::cospherical: return "cospherical";
-    case Site_family::scaled_up: return "scaled-up";
-    case Site_family::scaled_down: return "scaled-down";
-    case Site_family::lattice_noise: return "lattice-noise";
-    case Site_family::far_vertices: return "far-vertices";
-  }
-  throw std::invalid_argument("unknown site family");
-}
+const char* name_of(Site_family family) { return kSiteFamilies[static_cast<std::size_t>(family)].name; }
 
 const std::vector<std::string>& site_family_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> v;
-    for (Site_family f : kFamilies) v.push_back(name_of(f));
+    for (const Site_family_description& d : kSiteFamilies) v.push_back(d.name);
     return v;
   }();
   return names;
 }
 
 Site_family site_family_from_name(const std::string& name) {
-  for (Site_family f : kFamilies)
-    if (name == name_of(f)) return f;
+  for (const Site_family_description& d : kSiteFamilies)
+    if (name == d.name) return d.family;
   throw std::invalid_argument("unknown site family '" + name + "'");
 }
 
@@ -94,6 +81,7 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
   Random random(seed * 0x2545F4914F6CDD1Dull + static_cast<std::uint64_t>(family));
   std::vector<Site> sites;
   sites.reserve(n);
+  std::set<std::array<double, 4>> lattice_sites;  // the lattice family's sites so far: repeats found in O(log n)
   while (sites.size() < n) {
     switch (family) {
       case Site_family::uniform: sites.push_back(random_site(random, 10, 0.5, 3)); break;
@@ -105,10 +93,10 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
       case Site_family::lattice: {
         long side = 1;  // at least twice as many lattice points as sites, so that the loop ends quickly
         while ((side + 1) * (side + 1) * (side + 1) < 2 * static_cast<long>(n)) ++side;
-        sites.push_back({4.0 * random.integer(0, side), 4.0 * random.integer(0, side), 4.0 * random.integer(0, side),
-                         random.integer(0, 1) ? 1.0 : 1.5});
+        const Site s{4.0 * random.integer(0, side), 4.0 * random.integer(0, side), 4.0 * random.integer(0, side),
+                     random.integer(0, 1) ? 1.0 : 1.5};
         // Lattice points repeat; a repeat is a duplicate site, which the duplicates family covers.
-        if (std::count(sites.begin(), sites.end() - 1, sites.back()) > 0) sites.pop_back();
+        if (lattice_sites.insert({s.x, s.y, s.z, s.w}).second) sites.push_back(s);
         break;
       }
       case Site_family::coplanar: {

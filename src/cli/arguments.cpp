@@ -2,6 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
+
+#include "io/atomic_file.h"
 
 namespace apollonius {
 
@@ -15,6 +18,16 @@ double parse_option_number(const std::string& text, const std::string& option) {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
     throw Usage_error("option " + option + " needs finite numbers, not '" + text + "'");
+  return value;
+}
+
+std::uint64_t parse_option_integer(const std::string& text, const std::string& option, std::uint64_t min,
+                                   std::uint64_t max) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < min || value > max)
+    throw Usage_error("option " + option + " needs an integer from " + std::to_string(min) + " to " +
+                      std::to_string(max) + ", not '" + text + "'");
   return value;
 }
 
@@ -34,6 +47,20 @@ bool parse_read_option(const std::string& argument, Read_options& options) {
     return false;
   }
   return true;
+}
+
+void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write) {
+  if (path.empty()) {
+    std::ostringstream buffer;
+    write(buffer);
+    out << buffer.str() << std::flush;
+    return;
+  }
+  try {
+    write_file_atomically(path, write);
+  } catch (const std::runtime_error& e) {
+    throw Usage_error(e.what());
+  }
 }
 
 }  // namespace apollonius

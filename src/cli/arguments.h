@@ -2,6 +2,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,10 +24,18 @@ const std::string& option_value(const std::vector<std::string>& args, std::size_
 // A finite number given to option.
 double parse_option_number(const std::string& text, const std::string& option);
 
+// An integer from min to max given to option.
+std::uint64_t parse_option_integer(const std::string& text, const std::string& option, std::uint64_t min,
+                                   std::uint64_t max);
+
 // The value of --threads: an integer from 1 to 1024.
 int parse_threads(const std::string& text);
 
 // Whether argument is an option of the INPUT readers (--keep-hydrogens, --keep-waters), set in options.
 bool parse_read_option(const std::string& argument, Read_options& options);
+
+// A command's output: written atomically to path, or to out when path is empty, where nothing appears
+// unless all of it is ready. A file that cannot be written is a Usage_error.
+void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write);
 
 }  // namespace apollonius

@@ -3,14 +3,13 @@
 #include <functional>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 
 #include "brute_force_diagram.h"
 #include "certify_command.h"
 #include "cli/arguments.h"
+#include "cli/generate_command.h"
 #include "octree_diagram.h"
-#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/read_sites.h"
 #include "io/write_vertices.h"
@@ -30,7 +29,7 @@ constexpr const char* kVerticesUsage =
 constexpr const char* kExitCodes =
     "exit codes: 0 ok, 1 certify found discrepancies, 2 usage or input error, 3 internal error\n";
 
-void print_usage(std::ostream& out) { out << kVerticesUsage << certify_usage << kExitCodes; }
+void print_usage(std::ostream& out) { out << kVerticesUsage << certify_usage << generate_usage << kExitCodes; }
 
 struct Vertices_command {
   std::string input;
@@ -122,17 +121,7 @@ int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::o
     else
       write_vertices_text(o, diagram);
   };
-  if (command.output.empty()) {
-    std::ostringstream buffer;  // nothing reaches stdout unless all of it is ready
-    write(buffer);
-    out << buffer.str() << std::flush;
-  } else {
-    try {
-      write_file_atomically(command.output, write);
-    } catch (const std::runtime_error& e) {
-      throw Usage_error(e.what());
-    }
-  }
+  write_command_output(command.output, out, write);
   if (command.stats) {
     print_statistics(err, stats);
     if (!command.brute_force) print_octree_statistics(err, octree_statistics);
@@ -151,6 +140,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     }
     if (args[0] == "vertices") return run_vertices(args, out, err);
     if (args[0] == "certify") return run_certify(args, err);
+    if (args[0] == "generate") return run_generate(args, out);
     throw Usage_error("unknown command '" + args[0] + "'");
   } catch (const Usage_error& e) {
     err << "apollonius3d: " << e.what() << '\n';

@@ -1,17 +1,9 @@
 #include "io/json_output.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
 namespace apollonius {
-
-std::string round_trip(double value) {
-  // std::to_chars with a precision is specified to print as printf's %.17g does, several times faster.
-  char text[32];
-  const std::to_chars_result result = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
-  return std::string(text, result.ptr);
-}
 
 std::string json_number(double value) {
   if (std::isfinite(value)) return round_trip(value);

@@ -6,10 +6,9 @@
 #include <ostream>
 #include <string>
 
-namespace apollonius {
+#include "io/round_trip.h"
 
-// %.17g: 17 significant digits read back as the same double; non-finite values print as inf, -inf.
-std::string round_trip(double value);
+namespace apollonius {
 
 // A number, or the string "inf" or "-inf", which JSON lacks.
 std::string json_number(double value);

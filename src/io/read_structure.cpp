@@ -1,9 +1,14 @@
 #include "io/read_structure.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <map>
 #include <regex>
 #include <stdexcept>
+#include <string_view>
 
+#include <gemmi/fileutil.hpp>
 #include <gemmi/gz.hpp>
 #include <gemmi/mmread.hpp>
 
@@ -51,9 +56,19 @@ bool is_water(const std::string& residue_name) {
   return residue_name == "HOH" || residue_name == "WAT" || residue_name == "DOD" || residue_name == "H2O";
 }
 
+// gemmi reads "nan", "inf" and numbers beyond the double range as coordinates. They are bad input, as in
+// balls text: no algorithm may see them (GMP even raises SIGFPE on converting one). gemmi keeps no line
+// numbers, so the atom is named instead.
+void check_finite_position(const gemmi::Atom& atom, const gemmi::Residue& residue, const gemmi::Chain& chain,
+                           const std::string& name) {
+  if (std::isfinite(atom.pos.x) && std::isfinite(atom.pos.y) && std::isfinite(atom.pos.z)) return;
+  throw Input_error(name, 0, "not a finite coordinate: atom " + std::to_string(atom.serial) + " (" + atom.name +
+                                 " of " + residue.name + " " + residue.seqid.str() + ", chain " + chain.name + ")");
+}
+
 // The sites of one model, in file order. Of the alternate locations of an atom only the first one seen
 // is kept, so that each atom is one ball (one conformer); atoms without an altloc are always kept.
-std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options) {
+std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options, const std::string& name) {
   std::vector<Site> sites;
   std::map<std::string, char> first_altloc;  // keyed by chain, residue number and atom name
   for (const gemmi::Chain& chain : model.chains) {
@@ -65,6 +80,7 @@ std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& 
           const std::string key = chain.name + ' ' + residue.seqid.str() + ' ' + atom.name;
           if (first_altloc.emplace(key, atom.altloc).first->second != atom.altloc) continue;
         }
+        check_finite_position(atom, residue, chain, name);
         sites.push_back({atom.pos.x, atom.pos.y, atom.pos.z, van_der_waals_radius(atom.element.elem)});
       }
     }
@@ -102,20 +118,54 @@ gemmi::PdbReadOptions pdb_read_options() {
   return options;
 }
 
+// Whether a line starts with the record name, in any case: gemmi's test (is_record_type), which compares
+// the first four characters only.
+bool starts_with_record(std::string_view line, std::string_view record) {
+  if (line.size() < 4) return false;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (std::toupper(static_cast<unsigned char>(line[i])) != record[i]) return false;
+  return true;
+}
+
+// gemmi 0.5.7 reads the distance of an SSBOND or LINK record (columns 74-78) from any such line longer
+// than 73 bytes, and so reads past the end of a line of 74 to 77 (regression/gemmi_ssbond_overread.pdb).
+// gemmi collects these records and CISPEP only for bonds, which no radius needs: they are blanked here,
+// their line breaks kept so that gemmi's line numbers stay right.
+std::string without_connection_records(std::string_view pdb) {
+  std::string kept;
+  kept.reserve(pdb.size());
+  for (std::size_t start = 0; start < pdb.size();) {
+    const std::size_t end = std::min(pdb.find('\n', start), pdb.size() - 1) + 1;  // past the line break
+    const std::string_view line = pdb.substr(start, end - start);
+    if (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK") || starts_with_record(line, "CISP"))
+      kept += line.back() == '\n' ? "\n" : "";
+    else
+      kept += line;
+    start = end;
+  }
+  return kept;
+}
+
+gemmi::Structure parse_pdb(std::string_view pdb, const std::string& name) {
+  const std::string text = without_connection_records(pdb);
+  return gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_read_options());
+}
+
 gemmi::Structure parse_structure(const std::string& path_or_name, const std::string* content) {
   if (content == nullptr) {
     gemmi::MaybeGzipped input(path_or_name);
     if (gemmi::coor_format_from_ext(input.basepath()) == gemmi::CoorFormat::Mmcif) {
       return gemmi::make_structure(gemmi::cif::read(input));
     }
-    return gemmi::read_pdb(input, pdb_read_options());
+    const gemmi::CharArray text = gemmi::read_into_buffer(input);
+    return parse_pdb(std::string_view(text.data(), text.size()), path_or_name);
   }
   // gemmi's own test: mmCIF if the first line that is not blank nor a '#' comment starts with "data_".
   const char* const begin = content->data();
   if (gemmi::coor_format_from_content(begin, begin + content->size()) == gemmi::CoorFormat::Mmcif) {
     return gemmi::make_structure(gemmi::cif::read_memory(content->data(), content->size(), path_or_name.c_str()));
   }
-  return gemmi::read_pdb_string(*content, path_or_name, pdb_read_options());
+  return parse_pdb(*content, path_or_name);
 }
 
 }  // namespace
@@ -132,7 +182,7 @@ std::vector<Site> read_structure(const std::string& path_or_name, const std::str
     throw input_error_from_gemmi(path_or_name, e.what());
   }
   std::vector<Site> sites;
-  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options);
+  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options, path_or_name);
   if (sites.empty()) throw Input_error(path_or_name, 0, "no atoms");
   return sites;
 }

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz with clang, AddressSanitizer and UndefinedBehaviorSanitizer
+# into build-fuzz/, then runs each for SECONDS (default 600), one after the other, one process each.
+# Corpora grow in build-fuzz/corpus/TARGET (fuzz_read_sites starts from the inputs of tests/data,
+# examples/ and tests/fuzz/seeds); crashing, leaking and slow inputs are kept in build-fuzz/artifacts/TARGET/.
+# Exits 1 if any target found one. Reproduce one with build-fuzz/tests/fuzz/TARGET FILE; for
+# fuzz_vertices, APOLLONIUS_FUZZ_PRINT_SITES=1 also prints its sites as balls text.
+# FUZZ_OPTIONS adds libFuzzer options to every run, e.g. FUZZ_OPTIONS="-fork=1 -ignore_timeouts=1
+# -ignore_ooms=1" to fuzz on past a known slow input.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-600}
+scripts/install-deps.sh --fuzz
+build_dir=build-fuzz
+mkdir -p "$build_dir"
+# -O2 without -DNDEBUG: CGAL's assertions stay on, among them its runtime test that interval arithmetic
+# sees the rounding modes it sets (-frounding-math, from CMakeLists.txt).
+cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DAPOLLONIUS_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" > "$build_dir/cmake.log" 2>&1 || { cat "$build_dir/cmake.log"; exit 1; }
+cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices
+
+corpus=$build_dir/corpus
+mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices"
+cp tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/* examples/*.pdb tests/fuzz/seeds/* \
+  "$corpus/fuzz_read_sites/"
+
+# Per target: extra libFuzzer options. fuzz_vertices decodes at most 12 sites from about 450 bytes.
+declare -A options=(
+  [fuzz_read_sites]="-dict=tests/fuzz/read_sites.dict"
+  [fuzz_vertices]="-max_len=512"
+)
+status=0
+for target in fuzz_read_sites fuzz_vertices; do
+  artifacts=$build_dir/artifacts/$target
+  mkdir -p "$artifacts"
+  echo "fuzz: $target for $seconds s (log: $build_dir/$target.log)"
+  # -timeout: an input of a few bytes or of 12 sites taking 20 s is a defect to look at, as much as a crash.
+  # shellcheck disable=SC2086
+  if ! "$build_dir/tests/fuzz/$target" ${options[$target]} ${FUZZ_OPTIONS:-} -max_total_time="$seconds" \
+      -timeout=20 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus/$target" > "$build_dir/$target.log" 2>&1; then
+    status=1
+    echo "fuzz: $target FAILED, inputs in $artifacts:"
+    ls "$artifacts"
+  fi
+  grep "cov:" "$build_dir/$target.log" | tail -1 || true
+  grep -E "stat::number_of_executed_units|^SUMMARY" "$build_dir/$target.log" || true
+done
+exit $status
