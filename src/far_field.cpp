@@ -13,15 +13,22 @@ namespace apollonius {
 namespace {
 
 // Patches are refined at most this often (6 * 4^10 patches at the most, only where sites nearly tie at
-// infinity); a patch still holding 4 or more sites there is decided by enumerating their quadruples.
+// infinity). A patch whose kept sites stop changing for kStagnationLevels levels, with at most
+// kStagnantSites of them, stops earlier: sites that tie at infinity (or beyond what the root box lets the
+// bound see) are not separated by finer patches, and their quadruples are decided anyway.
 constexpr int kMaxPatchDepth = 10;
+constexpr int kStagnationLevels = 2;
+constexpr std::size_t kStagnantSites = 8;
 
 struct Patch {
   int axis;     // the face of [-1, 1]^3: direction y with y[axis] = side
   double side;  // +1 or -1
   double s0, s1, t0, t1;  // the other two coordinates of y, in axis order
   int depth;
+  int stagnant;  // levels since the kept sites last changed
 };
+
+using Quadruple_key = std::array<Site_index, 4>;
 
 // a = p - O, |a|^2 and |a| of an escaping site.
 struct Offset {
@@ -73,17 +80,20 @@ class Far_field {
       }
     }
     if (kept.size() <= 3) return;
-    if (kept.size() == 4 || p.depth >= kMaxPatchDepth) {
-      decide_quadruples(kept);
+    const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
+    if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
+        (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
+      record_quadruples(kept);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2;
     for (int q = 0; q < 4; ++q)
-      refine({p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0, q & 2 ? p.t1 : tm, p.depth + 1},
+      refine({p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0, q & 2 ? p.t1 : tm, p.depth + 1,
+              stagnant},
              kept);
   }
 
-  std::vector<Found_vertex> take_vertices() { return std::move(found_); }
+  std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
 
  private:
   // Whether a site beaten by margin m owns no point of the cone beyond the root box's inscribed ball:
@@ -92,12 +102,14 @@ class Far_field {
     return (witness.norm + Interval(witness_spread) / (Interval(2) * Interval(margin))).sup() <= radius_;
   }
 
-  // Every vertex outside the root box whose tie set lies among `candidates`, decided exactly against the
-  // escaping sites (which own every point outside the box).
-  void decide_quadruples(const std::vector<Site_index>& candidates) {
-    const std::array<bool, 3> closed = {true, true, true};
-    apollonius::decide_quadruples(sites_, candidates, escaping_, [&](const Vertex& v) { return !vertex_in_box(v, root_, closed); },
-                                  found_, 0);
+  // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
+  // of one of their quadruples (sorted; kept is ascending).
+  void record_quadruples(const std::vector<Site_index>& kept) {
+    const std::size_t k = kept.size();
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t b = a + 1; b < k; ++b)
+        for (std::size_t c = b + 1; c < k; ++c)
+          for (std::size_t d = c + 1; d < k; ++d) quadruples_.push_back({kept[a], kept[b], kept[c], kept[d]});
   }
 
   const std::vector<Site>& sites_;
@@ -105,7 +117,7 @@ class Far_field {
   double radius_;
   Axis_box root_;
   std::vector<Offset> offsets_;
-  std::vector<Found_vertex> found_;
+  std::vector<Quadruple_key> quadruples_;
 };
 
 }  // namespace
@@ -113,18 +125,42 @@ class Far_field {
 std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root) {
   if (escaping.size() < 4) return {};
-  // The six faces of the direction cube are independent; the vertices they find are merged in face order
-  // and kept once (a vertex near a patch border can be found from both sides).
-  std::vector<std::vector<Found_vertex>> by_face(6);
+  // The six faces of the direction cube are refined independently; neighbouring patches share most of
+  // their quadruples, so those are collected first and each is decided once.
+  std::vector<std::vector<Quadruple_key>> by_face(6);
   tbb::parallel_for(0, 6, [&](int face) {
     Far_field field(sites, escaping, origin, radius, root);
-    field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0}, escaping);
-    by_face[face] = field.take_vertices();
+    field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, escaping);
+    by_face[face] = field.take_quadruples();
   });
+  std::vector<Quadruple_key> quadruples;
+  for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
+  std::sort(quadruples.begin(), quadruples.end());
+  quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
+
+  // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
+  // point there), with its tie set among them.
+  std::vector<std::vector<Found_vertex>> found(quadruples.size());
+  tbb::parallel_for(std::size_t{0}, quadruples.size(), [&](std::size_t q) {
+    const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
+    decide_quadruples(sites, quadruple, escaping,
+                      [&](const Vertex& v) { return !vertex_in_box(v, root, std::array<bool, 3>{true, true, true}); },
+                      found[q], 0);
+  });
+  // A vertex with five or more tied sites is found from several of their quadruples: kept once.
   std::vector<Found_vertex> vertices;
-  for (auto& found : by_face)
-    for (Found_vertex& f : found) append_unique(vertices, 0, std::move(f));
-  return vertices;
+  for (auto& list : found)
+    for (Found_vertex& f : list) vertices.push_back(std::move(f));
+  std::stable_sort(vertices.begin(), vertices.end(), [](const Found_vertex& x, const Found_vertex& y) { return x.first < y.first; });
+  std::vector<Found_vertex> unique;
+  for (std::size_t i = 0; i < vertices.size();) {
+    std::size_t end = i;
+    while (end < vertices.size() && vertices[end].first == vertices[i].first) ++end;
+    const std::size_t group = unique.size();
+    for (std::size_t k = i; k < end; ++k) append_unique(unique, group, std::move(vertices[k]));
+    i = end;
+  }
+  return unique;
 }
 
 }  // namespace apollonius

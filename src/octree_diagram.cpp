@@ -10,6 +10,7 @@
 #include "box_refinement.h"
 #include "candidate_propagation.h"
 #include "far_field.h"
+#include "scale_normalization.h"
 #include "seed_partition.h"
 #include "site_set.h"
 
@@ -35,12 +36,15 @@ class Lap_timer {
 
 }  // namespace
 
-Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options) {
+Diagram octree_diagram(const std::vector<Site>& input_sites, const Octree_options& options) {
   Octree_statistics statistics;
   Lap_timer timer;
-  std::vector<Hidden_site> hidden = classify_hidden_sites(sites);
-  const std::vector<Site_index> active = active_sites(sites.size(), hidden);
-  if (active.size() < 4) return assemble_diagram(sites.size(), std::move(hidden), {});
+  std::vector<Hidden_site> hidden = classify_hidden_sites(input_sites);
+  const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
+  if (active.size() < 4) return assemble_diagram(input_sites.size(), std::move(hidden), {});
+  const int exponent = normalizing_exponent(input_sites, active);
+  const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
+  const std::vector<Site>& sites = exponent == 0 ? input_sites : normalized;
 
   const Seed_partition partition(sites, active, kFarFieldScale);
   statistics.partition_seconds = timer.lap();
@@ -85,6 +89,8 @@ Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& opt
     statistics.far_field_seconds = timer.lap();
   });
   for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(vertices));
+  if (exponent != 0)
+    for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
   Diagram diagram = assemble_diagram(sites.size(), std::move(hidden), std::move(vertices));
   statistics.assembly_seconds = timer.lap();
   if (options.statistics) *options.statistics = statistics;

@@ -31,12 +31,17 @@ void check_octree_equals_brute_force(const std::string& name) {
 
 }  // namespace
 
-// Skipped until the far field handles coordinates beyond 2^511: today it runs for far longer than a test
-// may. Run it with `build/tests/test_fuzz_regressions --no-skip`.
-TEST_CASE("regression: octree_far_field_stalls_beyond_2e154" * doctest::skip()) {
+// Fixed by running the octree on sites scaled to a moderate extent (scale_normalization.h).
+TEST_CASE("regression: octree_far_field_stalls_beyond_2e154") {
   check_octree_equals_brute_force("octree_far_field_stalls_beyond_2e154.balls");
 }
 
+// Fixed by deciding each quadruple of the far field once, and by stopping patches that stagnate.
 TEST_CASE("regression: octree_far_field_slow_for_far_vertices") {
   check_octree_equals_brute_force("octree_far_field_slow_for_far_vertices.balls");
+}
+
+// The octree's root box would exceed the double range; scaled down by 2^1023 it does not.
+TEST_CASE("regression: octree_root_box_beyond_double_range") {
+  check_octree_equals_brute_force("octree_root_box_beyond_double_range.balls");
 }
