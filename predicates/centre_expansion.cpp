@@ -8,25 +8,19 @@ namespace apollonius {
 namespace {
 
 constexpr double kUnit = 0x1p-53;  // unit roundoff of round-to-nearest doubles
-// Sums of squares inside [kTiny, kHuge] (or exactly 0) keep the relative error bounds of ERROR_BOUNDS.md:
-// underflowed terms are then negligible and nothing overflows; weights must stay below kHugeWeight.
-constexpr double kTiny = 0x1p-960, kHuge = 0x1p960, kHugeWeight = 0x1p480;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-bool in_range(double sum_of_squares) { return sum_of_squares == 0 || (sum_of_squares >= kTiny && sum_of_squares <= kHuge); }
+}  // namespace
 
-// The computed distance from x_s to the box, or -1 out of range.
-double distance_to_box(const Site& s, const Axis_box& box) {
+double distance_to_box(const Site& s, const Box_frame& frame) {
   const double p[3] = {s.x, s.y, s.z};
   double sum = 0;
   for (int a = 0; a < 3; ++a) {
-    const double gap = p[a] < box.lo[a] ? box.lo[a] - p[a] : p[a] > box.hi[a] ? p[a] - box.hi[a] : 0;
+    const double gap = p[a] < frame.box.lo[a] ? frame.box.lo[a] - p[a] : p[a] > frame.box.hi[a] ? p[a] - frame.box.hi[a] : 0;
     sum += gap * gap;
   }
-  return in_range(sum) ? std::sqrt(sum) : -1;
+  return in_error_bound_range(sum) ? std::sqrt(sum) : -1;
 }
-
-}  // namespace
 
 Box_frame frame_of(const Axis_box& box) {
   Box_frame frame{};
@@ -41,39 +35,26 @@ Box_frame frame_of(const Axis_box& box) {
   }
   frame.reach = std::sqrt(squares) * (1 + 8 * kUnit);
   frame.reach_squared = frame.reach * frame.reach;
-  frame.usable = squares >= kTiny && squares <= kHuge;
+  frame.usable = squares >= kTinySquare && squares <= kHugeSquare;
   return frame;
-}
-
-Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) {
-  Centre_expansion e;
-  const double offset[3] = {frame.centre[0] - s.x, frame.centre[1] - s.y, frame.centre[2] - s.z};
-  const double squared = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2];
-  e.usable = frame.usable && in_range(squared) && std::fabs(s.w) <= kHugeWeight;
-  e.distance = std::sqrt(squared);
-  e.weighted = e.distance - s.w;
-  e.magnitude = e.distance + std::fabs(s.w);
-  const double inverse = e.distance > 0 ? 1 / e.distance : 0;
-  for (int a = 0; a < 3; ++a) e.gradient[a] = offset[a] * inverse;
-  return e;
 }
 
 Witness_expansion expand_witness(const Site& s, const Box_frame& frame) {
   Witness_expansion e;
   static_cast<Centre_expansion&>(e) = expand_at_centre(s, frame);
-  e.distance_to_box = distance_to_box(s, frame.box);
+  e.distance_to_box = distance_to_box(s, frame);
   e.usable = e.usable && e.distance_to_box >= 0;
   e.curvature_term = e.distance_to_box > 0 ? frame.reach_squared / (2 * e.distance_to_box) : kInfinity;
   return e;
 }
 
 bool dominates_beyond_first_order(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                  const Centre_expansion& at_i, const Box_frame& frame, double linear) {
+                                  const Centre_expansion& at_i, double rho_i, const Box_frame& frame, double linear) {
   const double gap = at_i.weighted - at_j.weighted;
   const double dx = i.x - j.x, dy = i.y - j.y, dz = i.z - j.z;
   const double separation_squared = dx * dx + dy * dy + dz * dz;
-  const double rho_i = distance_to_box(i, frame.box), rho_j = at_j.distance_to_box;
-  if (!in_range(separation_squared) || rho_i < 0) return false;
+  const double rho_j = at_j.distance_to_box;
+  if (!in_error_bound_range(separation_squared) || rho_i < 0) return false;
   const double separation = std::sqrt(separation_squared);
   const double rho_sum = rho_i + rho_j;
   const double two_sided =

@@ -50,28 +50,61 @@ struct Witness_expansion : Centre_expansion {
   double curvature_term;   // H^2 / (2 rho_j), infinite when rho_j = 0
 };
 
-Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame);
+// Sums of squares inside [kTinySquare, kHugeSquare] (or exactly 0) keep the relative error bounds of
+// ERROR_BOUNDS.md: underflowed terms are then negligible and nothing overflows.
+constexpr double kTinySquare = 0x1p-960, kHugeSquare = 0x1p960, kHugeWeight = 0x1p480;
+inline bool in_error_bound_range(double sum_of_squares) {
+  return sum_of_squares == 0 || (sum_of_squares >= kTinySquare && sum_of_squares <= kHugeSquare);
+}
+
+// Inline: the refinement expands every candidate of every box.
+inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) {
+  Centre_expansion e;
+  const double offset[3] = {frame.centre[0] - s.x, frame.centre[1] - s.y, frame.centre[2] - s.z};
+  const double squared = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2];
+  e.usable = frame.usable && in_error_bound_range(squared) && std::fabs(s.w) <= kHugeWeight;
+  e.distance = std::sqrt(squared);
+  e.weighted = e.distance - s.w;
+  e.magnitude = e.distance + std::fabs(s.w);
+  const double inverse = e.distance > 0 ? 1 / e.distance : 0;
+  for (int a = 0; a < 3; ++a) e.gradient[a] = offset[a] * inverse;
+  return e;
+}
+
 Witness_expansion expand_witness(const Site& s, const Box_frame& frame);
 
-// The second stage of expansion_dominates: two-sided curvature and the Lipschitz bound.
-bool dominates_beyond_first_order(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                  const Centre_expansion& at_i, const Box_frame& frame, double linear);
+// The computed distance from x_s to the box of `frame` (rho_s), or -1 out of range.
+double distance_to_box(const Site& s, const Box_frame& frame);
 
-// True only if j is certainly strictly closer than i at every point of the box of `frame`. Inline: the
-// refinement runs it for most (box, candidate) pairs, and most of them fail at the first comparisons.
-inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                const Centre_expansion& at_i, const Box_frame& frame) {
+// The second stage of expansion_dominates: two-sided curvature and the Lipschitz bound. rho_i is
+// distance_to_box(i, frame), computed once per candidate by the caller.
+bool dominates_beyond_first_order(const Site& j, const Witness_expansion& at_j, const Site& i,
+                                  const Centre_expansion& at_i, double rho_i, const Box_frame& frame, double linear);
+
+// The first stage of the test: the first-order term sum_a |g_a| h_a with the one-sided curvature
+// 1 / rho_j, decisive for most boxes. Returns whether it certifies, and sets `linear`.
+inline bool first_order_dominates(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
+                                  double& linear) {
   constexpr double kUnit = 0x1p-53;
   const double gap = at_i.weighted - at_j.weighted;  // f(c)
-  if (!(gap > 0) || !at_i.usable || !at_j.usable) return false;
-  // First order, sum_a |g_a| h_a, with the one-sided curvature 1 / rho_j: decisive for most boxes. The
-  // slack covers the rounding errors of f(c) and of the bound (ERROR_BOUNDS.md "Centre expansion", item 6).
-  double linear = 0;
+  linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
   const double bound = linear + at_j.curvature_term;
-  if (bound + 64 * kUnit * (bound + frame.reach + at_i.magnitude + at_j.magnitude + gap) < gap) return true;
+  // The slack covers the rounding errors of f(c) and of the bound (ERROR_BOUNDS.md "Centre expansion").
+  return gap > 0 && at_i.usable && at_j.usable &&
+         bound + 64 * kUnit * (bound + frame.reach + at_i.magnitude + at_j.magnitude + gap) < gap;
+}
+
+// True only if j is certainly strictly closer than i at every point of the box of `frame`. `rho_i`
+// holds distance_to_box(i, frame) once computed (negative before), for the second stage.
+inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
+                                const Centre_expansion& at_i, const Box_frame& frame, double& rho_i) {
+  double linear;
+  if (first_order_dominates(at_j, at_i, frame, linear)) return true;
   // Both other bounds are at least `linear`.
-  return gap > linear && dominates_beyond_first_order(j, at_j, i, at_i, frame, linear);
+  if (!(at_i.weighted - at_j.weighted > linear) || !at_i.usable || !at_j.usable) return false;
+  if (rho_i < 0) rho_i = distance_to_box(i, frame);
+  return dominates_beyond_first_order(j, at_j, i, at_i, rho_i, frame, linear);
 }
 
 }  // namespace apollonius

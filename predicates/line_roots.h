@@ -53,6 +53,15 @@ inline Vertex_coordinates<Interval> coordinates_on_line(const Quadruple_line<Int
   return V;
 }
 
+// The same in doubles with error (double_with_error.h), the first filter stage of vertices_of.
+inline Vertex_coordinates<Double_with_error> coordinates_on_line(const Quadruple_line<Double_with_error>& line,
+                                                                 const Root_number<Double_with_error>& lambda) {
+  const Double_with_error l = (lambda.a + lambda.b * sqrt(lambda.d)) / lambda.denominator;
+  Vertex_coordinates<Double_with_error> V;
+  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
+  return V;
+}
+
 // Over the common denominator den * |n_k|.
 inline Vertex_coordinates<Exact> coordinates_on_line(const Quadruple_line<Exact>& line,
                                                      const Root_number<Exact>& lambda) {

@@ -61,6 +61,11 @@ std::array<Root_number<Exact>, 4> exact_point(const Vertex& v) {
 
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X) { return Vertex(q, root, X.scaled); }
 
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with_error> X) {
+  return Vertex(q, root, {enclosing_interval(X.scaled[0]), enclosing_interval(X.scaled[1]), enclosing_interval(X.scaled[2]),
+                          enclosing_interval(X.scaled[3])});
+}
+
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X) {
   return Vertex(q, root, std::make_shared<const Vertex_coordinates<Exact>>(std::move(X)));
 }

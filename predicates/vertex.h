@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 
+#include "double_with_error.h"
 #include "quadratic.h"
 #include "quadruple_line.h"
 #include "root_sign.h"
@@ -33,6 +34,14 @@ struct Vertex_coordinates<Interval> {
   std::array<Interval, 4> scaled;
   Interval denominator{1};
   Sign sign(const Interval& e) const { return certain_sign(e); }
+};
+
+template <>
+struct Vertex_coordinates<Double_with_error> {
+  using Element = Double_with_error;
+  std::array<Double_with_error, 4> scaled;
+  Double_with_error denominator{1};
+  Sign sign(const Double_with_error& e) const { return certain_sign(e); }
 };
 
 template <>

@@ -109,8 +109,9 @@ void Box_refinement::keep_undominated(const Axis_box& box, std::size_t first, st
   for (std::size_t k = 0; k < count; ++k) {
     const Site& s = sites_[stack_[first + k]];
     bool dominated = false;
+    double rho = -1;  // computed by the second stage, once
     for (std::size_t w = 0; w < witnesses && !dominated && at_witness[w].weighted < expansion_[k].weighted; ++w)
-      dominated = expansion_dominates(sites_[stack_[first + witness[w]]], at_witness[w], s, expansion_[k], frame);
+      dominated = expansion_dominates(sites_[stack_[first + witness[w]]], at_witness[w], s, expansion_[k], frame, rho);
     if (!dominated) stack_.push_back(stack_[first + k]);
   }
 }

@@ -86,8 +86,9 @@ bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size
   const auto& held = graph.witnesses[b];
   if (held.empty()) return false;
   const Centre_expansion at_s = expand_at_centre(sites[s], graph.frame[b]);
+  double rho = -1;
   for (const auto& [w, at_w] : held)
-    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, graph.frame[b])) return true;
+    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, graph.frame[b], rho)) return true;
   return graph.tightest[b] != s && dominates_on_box(sites[graph.tightest[b]], sites[s], graph.box[b]);
 }
 

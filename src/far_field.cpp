@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "leaf_decision.h"
 #include "rounding_guard.h"
@@ -59,24 +60,35 @@ class Far_field {
       const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
       const Interval S(p.s0, p.s1), T(p.t0, p.t1);
       const Interval norm = CGAL::sqrt(Interval(1) + CGAL::square(S) + CGAL::square(T));
-      auto projection = [&](Site_index i) {  // u.a over the patch
-        const auto& a = offsets_[i].a;
+      // Over the patch, u.a for an offset a; the witness is the site whose support u.a + w is largest at
+      // the patch's middle direction. Margins are taken on differences, u.(a_j - a_k) + w_j - w_k, whose
+      // interval is as wide as |a_j - a_k| times the patch, not |a_j| + |a_k|.
+      auto projection = [&](const std::array<Interval, 3>& a) {
         return (Interval(p.side) * a[p.axis] + S * a[first] + T * a[second]) / norm;
       };
-      std::vector<Interval> support_of(candidates.size());
+      const double middle[3] = {p.side, p.s0 + (p.s1 - p.s0) / 2, p.t0 + (p.t1 - p.t0) / 2};
       std::size_t best = 0;
+      double best_support = -std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < candidates.size(); ++k) {
-        support_of[k] = projection(candidates[k]) + Interval(sites_[candidates[k]].w);
-        if (support_of[k].inf() > support_of[best].inf()) best = k;
+        const Offset& o = offsets_[candidates[k]];
+        const double support = middle[0] * o.a[p.axis].inf() + middle[1] * o.a[first].inf() +
+                               middle[2] * o.a[second].inf() + sites_[candidates[k]].w * std::sqrt(1 + middle[1] * middle[1] + middle[2] * middle[2]);
+        if (support > best_support) best_support = support, best = k;
       }
-      const Offset& witness = offsets_[candidates[best]];
-      const Interval witness_projection = projection(candidates[best]);
+      const Site_index w = candidates[best];
+      const Offset& witness = offsets_[w];
       // q_j = |a_j|^2 - (u.a_j)^2 over the patch, at least 0.
-      const double witness_spread = std::max(0.0, (witness.norm_squared - CGAL::square(witness_projection)).sup());
+      const double witness_spread = std::max(0.0, (witness.norm_squared - CGAL::square(projection(witness.a))).sup());
       for (std::size_t k = 0; k < candidates.size(); ++k) {
-        const Interval margin = Interval(support_of[best].inf()) - Interval(support_of[k].sup());
-        if (k == best || !(margin.inf() > 0) || !leaves_within_radius(witness, witness_spread, margin.inf()))
-          kept.push_back(candidates[k]);
+        const Site_index s = candidates[k];
+        bool removed = false;
+        if (k != best) {
+          const std::array<Interval, 3> difference = {witness.a[0] - offsets_[s].a[0], witness.a[1] - offsets_[s].a[1],
+                                                      witness.a[2] - offsets_[s].a[2]};
+          const Interval margin = projection(difference) + (Interval(sites_[w].w) - Interval(sites_[s].w));
+          removed = margin.inf() > 0 && leaves_within_radius(witness, witness_spread, margin.inf());
+        }
+        if (!removed) kept.push_back(s);
       }
     }
     if (kept.size() <= 3) return;

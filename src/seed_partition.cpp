@@ -9,7 +9,7 @@ namespace apollonius {
 namespace {
 
 // About this many level-0 cubes per active site: fewer cubes start with more candidates each.
-constexpr double kCubesPerSite = 1.0;
+constexpr double kCubesPerSite = 1;
 // Lattice indices stay below 2^50 in magnitude, so that k 2^l s is exact and sums of indices do not
 // overflow; the cube side stays above 2^-40 times the extent of the sites.
 constexpr double kLargestIndex = 0x1p50;
