@@ -63,7 +63,7 @@ bool dominates_beyond_first_order(const Site& j, const Witness_expansion& at_j, 
           : kInfinity;
   const double lipschitz = rho_sum > 0 ? std::min(2.0, 2 * separation / rho_sum) : 2.0;
   const double bound = std::min(lipschitz * frame.reach, linear + std::min(at_j.curvature_term, two_sided));
-  return bound + 64 * kUnit * (bound + frame.reach + at_i.magnitude + at_j.magnitude + gap) < gap;
+  return certainly_exceeds(gap, bound, frame.reach + at_i.magnitude + at_j.magnitude + gap);
 }
 
 }  // namespace apollonius

@@ -81,18 +81,23 @@ double distance_to_box(const Site& s, const Box_frame& frame);
 bool dominates_beyond_first_order(const Site& j, const Witness_expansion& at_j, const Site& i,
                                   const Centre_expansion& at_i, double rho_i, const Box_frame& frame, double linear);
 
+// Whether f(c) = gap certainly exceeds `bound`, computed in doubles from expansions whose magnitudes
+// sum to `scale` (reach + |c - x_i| + |w_i| + |c - x_j| + |w_j| + gap): the slack covers the rounding
+// errors of f(c) and of the bound (ERROR_BOUNDS.md "Centre expansion", item 6).
+inline bool certainly_exceeds(double gap, double bound, double scale) {
+  constexpr double kUnit = 0x1p-53;
+  return bound + 64 * kUnit * (bound + scale) < gap;
+}
+
 // The first stage of the test: the first-order term sum_a |g_a| h_a with the one-sided curvature
 // 1 / rho_j, decisive for most boxes. Returns whether it certifies, and sets `linear`.
 inline bool first_order_dominates(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
                                   double& linear) {
-  constexpr double kUnit = 0x1p-53;
   const double gap = at_i.weighted - at_j.weighted;  // f(c)
   linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
-  const double bound = linear + at_j.curvature_term;
-  // The slack covers the rounding errors of f(c) and of the bound (ERROR_BOUNDS.md "Centre expansion").
   return gap > 0 && at_i.usable && at_j.usable &&
-         bound + 64 * kUnit * (bound + frame.reach + at_i.magnitude + at_j.magnitude + gap) < gap;
+         certainly_exceeds(gap, linear + at_j.curvature_term, frame.reach + at_i.magnitude + at_j.magnitude + gap);
 }
 
 // True only if j is certainly strictly closer than i at every point of the box of `frame`. `rho_i`

@@ -12,6 +12,8 @@ namespace {
 
 // Paper section 5.2.1: a box with at most four candidates is decided.
 constexpr std::size_t kLeafCandidates = 6;
+// The quadruple cache holds at most about this many quadruples (each up to two vertices, ~0.5 KB).
+constexpr std::size_t kCachedQuadruples = 8192;
 // Each candidate is tested against this many of the best candidates at the box centre.
 constexpr std::size_t kWitnesses = 3;
 // Refining stops helping when the candidate count has not dropped for kStagnationLevels levels and the box
@@ -55,7 +57,7 @@ std::vector<Axis_box> split(const Axis_box& box) {
 void Box_refinement::find_vertices(const Axis_box& box, const std::vector<Site_index>& candidates,
                                    std::vector<Found_vertex>& out) {
   stack_.assign(candidates.begin(), candidates.end());
-  cache_.clear();
+  cache_.limit(kCachedQuadruples);
   refine(box, 0, 0, 0, out);
 }
 

@@ -51,7 +51,7 @@ class Box_refinement {
   std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
   std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
   std::vector<Site_index> tie_;
-  Quadruple_cache cache_;  // of the current seed box
+  Quadruple_cache cache_;
   Refinement_counts counts_;
 };
 

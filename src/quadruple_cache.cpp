@@ -33,7 +33,8 @@ void Quadruple_cache::grow() {
   }
 }
 
-void Quadruple_cache::clear() {
+void Quadruple_cache::limit(std::size_t entries) {
+  if (entries_.size() <= entries) return;
   std::fill(slots_.begin(), slots_.end(), 0);
   entries_.clear();
 }

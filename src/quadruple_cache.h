@@ -1,5 +1,6 @@
-// The vertices of the quadruples met while refining one seed box: neighbouring leaves share most of their
-// candidates, so most quadruples are met several times, and vertices_of runs once for each.
+// The vertices of the quadruples met while refining: neighbouring leaves share most of their candidates,
+// so most quadruples are met several times, and vertices_of runs once for each. One cache per thread,
+// kept across the seed boxes it refines (neighbours in space, mostly), emptied when it grows too large.
 #pragma once
 
 #include <array>
@@ -16,8 +17,10 @@ class Quadruple_cache {
  public:
   // The vertices of the quadruple of `sorted` (ascending site indices).
   const Quadruple_vertices& vertices_of_quadruple(const std::array<Site_index, 4>& sorted, const std::vector<Site>& sites);
-  void clear();
+  // Empties the cache once it holds more than `entries` quadruples.
+  void limit(std::size_t entries);
 
+  std::size_t size() const { return entries_.size(); }
   std::size_t lookups() const { return lookups_; }
   std::size_t misses() const { return misses_; }
 
