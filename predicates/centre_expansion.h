@@ -1,18 +1,20 @@
-// A certified test for removing a candidate site from a box: site j (the witness) is strictly closer than
-// site i at every point of the box if, with c the box centre, f = d_i - d_j and h_a the half-extents,
-//     f(c) > min( L H,  sum_a |g_a| h_a + kappa H^2 / 2 ),                                   (*)
-// where H bounds |x - c| on the box, g = grad d_i(c) - grad d_j(c), and
-//  - L = min(2, 2 |x_i - x_j| / (rho_i + rho_j)) bounds |grad f| on the box (Dunkl-Williams), rho_k being
-//    the distance from x_k to the box;
-//  - kappa bounds the curvature of -f on the box: d_i is convex, so f(x) >= f(c) + g.(x - c) - |x - c|^2 / 2
-//    times the largest eigenvalue of Hess d_j, at most 1 / rho_j; and since Hess d_i - Hess d_j has norm at
-//    most D / (r_i r_j) + 2 D / (r_j (r_i + r_j)) (D = |x_i - x_j|, r_k = |x - x_k| >= rho_k), far boxes
-//    get kappa ~ D / rho^2.
-// This refines paper Theorem 6, which needs f(c) > 2H: near a bisector that is flat over the box, (*)
-// removes a site as soon as the box does not cross the bisector, for either order of the weights (the
-// paper's Theorems 7 and 8 separate the two cases). It is evaluated in plain doubles with the error bound
-// derived in ERROR_BOUNDS.md ("Centre expansion"), and only ever certifies; a site it cannot remove stays
-// a candidate.
+// Certified tests for removing a candidate site i from a box: site j (the witness) is strictly closer than
+// i at every point of the box. With c the box centre, u_k = grad d_k(c) and y the eight corners:
+//
+//  (A) Corners. d_i is convex, so d_i(x) >= d_i(c) + u_i.(x - c); d_j is convex, so by Jensen d_j(x) is at
+//      most the trilinear interpolation of its values at the corners. The difference of the two bounds
+//      is linear in each coordinate, hence least at a corner: j dominates i on the box if
+//          d_i(c) + u_i.(y - c) > d_j(y)   at each corner y.
+//      This refines paper Theorems 6 and 8 at once, for either order of the weights, and it has no
+//      curvature term for the witness, which is what a witness near (or in) the box needs.
+//  (B) Far boxes. With f = d_i - d_j, g = u_i - u_j, h_a the half-extents and H >= |x - c| on the box,
+//          f(c) > min( L H,  sum_a |g_a| h_a + kappa H^2 / 2 )
+//      where L = min(2, 2D / (rho_i + rho_j)) bounds |grad f| (Dunkl-Williams; D = |x_i - x_j|, rho_k the
+//      distance from x_k to the box) and kappa = D / (rho_i rho_j) + 2D / (rho_j (rho_i + rho_j)) bounds
+//      the norm of Hess d_i - Hess d_j: both sites far from the box, their curvatures nearly cancel.
+//
+// Both are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
+// only ever certify; a site they cannot remove stays a candidate.
 #pragma once
 
 #include <array>
@@ -24,11 +26,13 @@
 namespace apollonius {
 
 // The box seen from its centre. Invariant: when usable, every point x of the box has |x_a - c_a| <=
-// half_extent[a] and |x - c| <= reach.
+// half_extent[a] and |x - c| <= reach; corner_offset[s][a] is y_a - c_a for the lower (s = 0) or upper
+// (s = 1) bound of axis a.
 struct Box_frame {
   Axis_box box;
   std::array<double, 3> centre;
   std::array<double, 3> half_extent;
+  std::array<std::array<double, 3>, 2> corner_offset;
   double reach, reach_squared;
   bool usable;
 };
@@ -44,10 +48,13 @@ struct Centre_expansion {
   bool usable;                     // every magnitude lies where the error bounds hold
 };
 
-// A witness also needs its distance to the box, rho_j, and the one-sided curvature term H^2 / (2 rho_j).
+// A witness also needs its distance to the box, rho_j, and d_j at the corners (corner[q], corner q having
+// the upper bound on axis a when bit a of q is set), computed when first needed (add_corners).
 struct Witness_expansion : Centre_expansion {
   double distance_to_box;  // 0 when x_j lies in the box
-  double curvature_term;   // H^2 / (2 rho_j), infinite when rho_j = 0
+  bool has_corners = false;
+  std::array<double, 8> corner;
+  double corner_magnitude;  // largest |y - x_j| + |w_j| over the corners
 };
 
 // Sums of squares inside [kTinySquare, kHugeSquare] (or exactly 0) keep the relative error bounds of
@@ -72,44 +79,41 @@ inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) 
 }
 
 Witness_expansion expand_witness(const Site& s, const Box_frame& frame);
+void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
 
 // The computed distance from x_s to the box of `frame` (rho_s), or -1 out of range.
 double distance_to_box(const Site& s, const Box_frame& frame);
 
-// The second stage of expansion_dominates: two-sided curvature and the Lipschitz bound. rho_i is
-// distance_to_box(i, frame), computed once per candidate by the caller.
-bool dominates_beyond_first_order(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                  const Centre_expansion& at_i, double rho_i, const Box_frame& frame, double linear);
-
-// Whether f(c) = gap certainly exceeds `bound`, computed in doubles from expansions whose magnitudes
-// sum to `scale` (reach + |c - x_i| + |w_i| + |c - x_j| + |w_j| + gap): the slack covers the rounding
-// errors of f(c) and of the bound (ERROR_BOUNDS.md "Centre expansion", item 6).
-inline bool certainly_exceeds(double gap, double bound, double scale) {
+// Test (A). The slack covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
+inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame) {
   constexpr double kUnit = 0x1p-53;
-  return bound + 64 * kUnit * (bound + scale) < gap;
+  double term[2][3];
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) term[side][a] = at_i.gradient[a] * frame.corner_offset[side][a];
+  double least = at_i.weighted + term[0][0] + term[0][1] + term[0][2] - at_j.corner[0];
+  for (int q = 1; q < 8; ++q) {
+    const double value = at_i.weighted + term[q & 1][0] + term[q >> 1 & 1][1] + term[q >> 2 & 1][2] - at_j.corner[q];
+    least = value >= least ? least : value;  // a NaN propagates, and then certifies nothing
+  }
+  return at_i.usable && at_j.usable && least > 32 * kUnit * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
 }
 
-// The first stage of the test: the first-order term sum_a |g_a| h_a with the one-sided curvature
-// 1 / rho_j, decisive for most boxes. Returns whether it certifies, and sets `linear`.
-inline bool first_order_dominates(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
-                                  double& linear) {
-  const double gap = at_i.weighted - at_j.weighted;  // f(c)
-  linear = 0;
-  for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
-  return gap > 0 && at_i.usable && at_j.usable &&
-         certainly_exceeds(gap, linear + at_j.curvature_term, frame.reach + at_i.magnitude + at_j.magnitude + gap);
-}
+// Test (B), given linear = sum_a |g_a| h_a; rho_i is distance_to_box(i, frame).
+bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
+                   double rho_i, const Box_frame& frame, double linear);
 
-// True only if j is certainly strictly closer than i at every point of the box of `frame`. `rho_i`
-// holds distance_to_box(i, frame) once computed (negative before), for the second stage.
+// True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
+// at_j.has_corners. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
 inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
                                 const Centre_expansion& at_i, const Box_frame& frame, double& rho_i) {
-  double linear;
-  if (first_order_dominates(at_j, at_i, frame, linear)) return true;
-  // Both other bounds are at least `linear`.
-  if (!(at_i.weighted - at_j.weighted > linear) || !at_i.usable || !at_j.usable) return false;
+  if (!at_i.usable || !at_j.usable || !(at_i.weighted > at_j.weighted)) return false;
+  if (corners_dominate(at_j, at_i, frame)) return true;
+  // Both bounds of (B) are at least sum_a |g_a| h_a.
+  double linear = 0;
+  for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
+  if (!(at_i.weighted - at_j.weighted > linear)) return false;
   if (rho_i < 0) rho_i = distance_to_box(i, frame);
-  return dominates_beyond_first_order(j, at_j, i, at_i, rho_i, frame, linear);
+  return far_dominates(j, at_j, i, at_i, rho_i, frame, linear);
 }
 
 }  // namespace apollonius

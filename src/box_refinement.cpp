@@ -112,8 +112,11 @@ void Box_refinement::keep_undominated(const Axis_box& box, std::size_t first, st
     const Site& s = sites_[stack_[first + k]];
     bool dominated = false;
     double rho = -1;  // computed by the second stage, once
-    for (std::size_t w = 0; w < witnesses && !dominated && at_witness[w].weighted < expansion_[k].weighted; ++w)
-      dominated = expansion_dominates(sites_[stack_[first + witness[w]]], at_witness[w], s, expansion_[k], frame, rho);
+    for (std::size_t w = 0; w < witnesses && !dominated && at_witness[w].weighted < expansion_[k].weighted; ++w) {
+      const Site& j = sites_[stack_[first + witness[w]]];
+      if (!at_witness[w].has_corners) add_corners(at_witness[w], j, frame);  // only witnesses that get used
+      dominated = expansion_dominates(j, at_witness[w], s, expansion_[k], frame, rho);
+    }
     if (!dominated) stack_.push_back(stack_[first + k]);
   }
 }

@@ -70,6 +70,7 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
         std::any_of(held.begin(), held.end(), [&](const auto& w) { return w.first == e.site; }))
       continue;
     held.emplace_back(e.site, expand_witness(sites[e.site], graph.frame[e.box]));
+    add_corners(held.back().second, sites[e.site], graph.frame[e.box]);
     for (std::size_t k = graph.neighbour_start[e.box]; k < graph.neighbour_start[e.box + 1]; ++k)
       offer(e.site, graph.neighbours[k]);
   }
