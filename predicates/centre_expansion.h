@@ -87,15 +87,16 @@ double distance_to_box(const Site& s, const Box_frame& frame);
 // Test (A). The slack covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
 inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame) {
   constexpr double kUnit = 0x1p-53;
+  if (!at_i.usable || !at_j.usable) return false;
+  const double slack = 32 * kUnit * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
   double term[2][3];
   for (int a = 0; a < 3; ++a)
     for (int side = 0; side < 2; ++side) term[side][a] = at_i.gradient[a] * frame.corner_offset[side][a];
-  double least = at_i.weighted + term[0][0] + term[0][1] + term[0][2] - at_j.corner[0];
-  for (int q = 1; q < 8; ++q) {
+  for (int q = 0; q < 8; ++q) {
     const double value = at_i.weighted + term[q & 1][0] + term[q >> 1 & 1][1] + term[q >> 2 & 1][2] - at_j.corner[q];
-    least = value >= least ? least : value;  // a NaN propagates, and then certifies nothing
+    if (!(value > slack)) return false;  // a NaN certifies nothing either
   }
-  return at_i.usable && at_j.usable && least > 32 * kUnit * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
+  return true;
 }
 
 // Test (B), given linear = sum_a |g_a| h_a; rho_i is distance_to_box(i, frame).

@@ -24,9 +24,14 @@ constexpr int kStagnationLevels = 4;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 400;
 
-// Halves the axes at least half as long as the longest; no children if some such axis has no double
-// strictly inside it.
-std::vector<Axis_box> split(const Axis_box& box) {
+// The children of a box: its axes at least half as long as the longest are halved. None if some such axis
+// has no double strictly inside it.
+struct Children {
+  std::array<Axis_box, 8> box;
+  int count = 0;
+};
+
+Children split(const Axis_box& box) {
   double longest = 0;
   for (int a = 0; a < 3; ++a) longest = std::max(longest, box.hi[a] - box.lo[a]);
   std::array<double, 3> middle;
@@ -36,7 +41,7 @@ std::vector<Axis_box> split(const Axis_box& box) {
     middle[a] = box.lo[a] + (box.hi[a] - box.lo[a]) / 2;
     if (halve[a] && !(box.lo[a] < middle[a] && middle[a] < box.hi[a])) return {};
   }
-  std::vector<Axis_box> children;
+  Children children;
   for (int corner = 0; corner < 8; ++corner) {
     Axis_box child = box;
     bool valid = true;
@@ -47,7 +52,7 @@ std::vector<Axis_box> split(const Axis_box& box) {
       else
         (upper ? child.lo[a] : child.hi[a]) = middle[a];
     }
-    if (valid) children.push_back(child);
+    if (valid) children.box[children.count++] = child;
   }
   return children;
 }
@@ -72,17 +77,21 @@ void Box_refinement::refine(const Axis_box& box, std::size_t first, int depth, i
                             std::vector<Found_vertex>& out) {
   const std::size_t end = stack_.size();
   ++counts_.boxes;
-  keep_undominated(box, first, end);
+  // A seed box's candidates were just filtered by the propagation, against the same kind of witnesses.
+  if (depth == 0)
+    stack_.insert(stack_.end(), stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.begin() + static_cast<std::ptrdiff_t>(end));
+  else
+    keep_undominated(box, first, end);
   const std::size_t kept = stack_.size() - end;
   if (kept >= 4) {
     stagnant = kept == end - first ? stagnant + 1 : 0;
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
                          (stagnant >= kStagnationLevels && tiny_against_candidates(box, end));
-    const std::vector<Axis_box> children = settled ? std::vector<Axis_box>{} : split(box);
-    if (children.empty())
+    const Children children = settled ? Children{} : split(box);
+    if (children.count == 0)
       decide_leaf(box, end, out);
     else
-      for (const Axis_box& child : children) refine(child, end, depth + 1, stagnant, out);
+      for (int c = 0; c < children.count; ++c) refine(children.box[c], end, depth + 1, stagnant, out);
   }
   stack_.resize(end);
 }
@@ -136,13 +145,14 @@ void Box_refinement::decide_leaf(const Axis_box& box, std::size_t first, std::ve
   ++counts_.leaves;
   counts_.leaf_candidates += k;
   const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
+  // Sorted once, so that every quadruple below comes out sorted.
+  std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
   const Site_index* leaf = stack_.data() + first;
   for (std::size_t a = 0; a < k; ++a)
     for (std::size_t b = a + 1; b < k; ++b)
       for (std::size_t c = b + 1; c < k; ++c)
         for (std::size_t d = c + 1; d < k; ++d) {
-          std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
-          std::sort(quadruple.begin(), quadruple.end());
+          const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
           for (const Vertex& v : cache_.vertices_of_quadruple(quadruple, sites_).vertices) {
             if (!vertex_in_box(v, box, closed_above)) continue;
             // The candidates include every owner of the vertex: its tie set is among them.

@@ -4,36 +4,31 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <queue>
 
-#include "box_distance.h"
 #include "centre_expansion.h"
-#include "dominates_on_box.h"
 
 namespace apollonius {
 namespace {
 
 // Each box keeps this many witnesses: sites of least distance at its centre, found by pass 1.
 constexpr std::size_t kWitnesses = 3;
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The boxes with their centres, witnesses and face neighbours (compressed rows).
-// Invariants: witnesses[b] holds distinct sites by ascending d at the centre; tightest[b] is the witness
-// whose greatest distance over the box is least (or none when there is no witness).
+// Invariant: witnesses[b] holds distinct sites by ascending d at the centre.
 struct Box_graph {
   std::vector<Axis_box> box;
   std::vector<Box_frame> frame;
   std::vector<std::size_t> neighbour_start, neighbours;
   std::vector<std::vector<std::pair<Site_index, Witness_expansion>>> witnesses;
-  std::vector<Site_index> tightest;
 
   explicit Box_graph(const Seed_partition& partition)
       : box(partition.id_count()),
         frame(partition.id_count()),
         neighbour_start(partition.id_count() + 1, 0),
-        witnesses(partition.id_count()),
-        tightest(partition.id_count(), 0) {
+        witnesses(partition.id_count()) {
     for (std::size_t id = 0; id < partition.id_count(); ++id) {
       if (partition.is_box(id)) {
         box[id] = partition.box(id);
@@ -58,8 +53,9 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
   };
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
   const auto offer = [&](Site_index s, std::size_t b) {
-    const Centre_expansion at = expand_at_centre(sites[s], graph.frame[b]);
-    events.push({at.usable ? at.weighted : kInfinity, s, b});
+    const double* c = graph.frame[b].centre.data();
+    const double dx = c[0] - sites[s].x, dy = c[1] - sites[s].y, dz = c[2] - sites[s].z;
+    events.push({std::sqrt(dx * dx + dy * dy + dz * dz) - sites[s].w, s, b});  // NaN or inf only delays it
   };
   for (Site_index s : active) offer(s, partition.home(sites[s]));
   while (!events.empty()) {
@@ -74,15 +70,9 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
     for (std::size_t k = graph.neighbour_start[e.box]; k < graph.neighbour_start[e.box + 1]; ++k)
       offer(e.site, graph.neighbours[k]);
   }
-  for (std::size_t b = 0; b < graph.box.size(); ++b) {
-    double least = kInfinity;
-    for (const auto& [w, at] : graph.witnesses[b])
-      if (const double upper = greatest_distance_bounds(sites[w], graph.box[b]).upper; upper < least)
-        least = upper, graph.tightest[b] = w;
-  }
 }
 
-// Whether a witness of box b certainly dominates site s on it: centre_expansion.h, then paper Theorem 6.
+// Whether a witness of box b certainly dominates site s on it (centre_expansion.h).
 bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size_t b, Site_index s) {
   const auto& held = graph.witnesses[b];
   if (held.empty()) return false;
@@ -90,7 +80,7 @@ bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size
   double rho = -1;
   for (const auto& [w, at_w] : held)
     if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, graph.frame[b], rho)) return true;
-  return graph.tightest[b] != s && dominates_on_box(sites[graph.tightest[b]], sites[s], graph.box[b]);
+  return false;
 }
 
 // Pass 2: each site floods from its home box through face neighbours, entering every box where no
@@ -133,7 +123,11 @@ std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site
   tbb::parallel_for(std::size_t{0}, active.size(), [&](std::size_t k) {
     flood(floods.local(), graph, sites, partition, active[k]);
   });
+  std::vector<std::size_t> count(partition.id_count(), 0);
+  for (const Flood& f : floods)
+    for (const auto& entry : f.entered) ++count[entry.first];
   std::vector<std::vector<Site_index>> candidates(partition.id_count());
+  for (std::size_t b = 0; b < candidates.size(); ++b) candidates[b].reserve(count[b]);
   for (const Flood& f : floods)
     for (const auto& [b, s] : f.entered) candidates[b].push_back(s);
   // The same lists for every thread count.

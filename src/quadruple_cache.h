@@ -11,8 +11,8 @@
 
 namespace apollonius {
 
-// Invariant: slots_ has a power-of-two size at least twice entries_.size(); a slot holds 0 (empty) or
-// 1 + the index of the entry whose key hashes there or, by linear probing, after it.
+// Invariant: slots_ has a power-of-two size at least twice entries_.size(); a slot is empty (entry 0) or
+// holds the key and 1 + the index of an entry whose key hashes there or, by linear probing, after it.
 class Quadruple_cache {
  public:
   // The vertices of the quadruple of `sorted` (ascending site indices).
@@ -25,10 +25,16 @@ class Quadruple_cache {
   std::size_t misses() const { return misses_; }
 
  private:
-  void grow();
-  std::size_t slot_of(const std::array<Site_index, 4>& key) const;
+  // The key in two words, compared without touching the entries.
+  struct Slot {
+    std::uint64_t low = 0, high = 0;
+    std::uint32_t entry = 0;
+  };
 
-  std::vector<std::uint32_t> slots_ = std::vector<std::uint32_t>(64, 0);
+  void grow();
+  std::size_t slot_of(std::uint64_t low, std::uint64_t high) const;
+
+  std::vector<Slot> slots_ = std::vector<Slot>(64);
   std::vector<std::pair<std::array<Site_index, 4>, Quadruple_vertices>> entries_;
   std::size_t lookups_ = 0, misses_ = 0;
 };

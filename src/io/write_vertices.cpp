@@ -1,5 +1,6 @@
 #include "io/write_vertices.h"
 
+#include <charconv>
 #include <string>
 
 #include "io/json_output.h"
@@ -7,14 +8,23 @@
 namespace apollonius {
 
 void write_vertices_text(std::ostream& out, const Diagram& diagram) {
-  std::string line;
+  std::string text;
+  char number[32];
   for (const Diagram_vertex& v : diagram.vertices) {
-    line.clear();
-    for (const Site_index site : v.tie_set) line += std::to_string(site) + ' ';
-    line += round_trip(v.rounded[0]) + ' ' + round_trip(v.rounded[1]) + ' ' + round_trip(v.rounded[2]) + ' ' +
-            round_trip(v.rounded[3]) + '\n';
-    out << line;
+    for (const Site_index site : v.tie_set) {
+      text.append(number, std::to_chars(number, number + sizeof number, site).ptr);
+      text += ' ';
+    }
+    for (int j = 0; j < 4; ++j) {
+      text += round_trip(v.rounded[j]);
+      text += j < 3 ? ' ' : '\n';
+    }
+    if (text.size() > (1u << 16)) {  // written in chunks
+      out << text;
+      text.clear();
+    }
   }
+  out << text;
 }
 
 void write_vertices_json(std::ostream& out, const Diagram& diagram, const std::vector<Predicate_statistics>* stats) {
