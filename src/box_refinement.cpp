@@ -10,7 +10,7 @@
 namespace apollonius {
 namespace {
 
-// Paper section 5.2.1: a box with at most four candidates is decided.
+// A box with at most this many candidates is decided (the paper: four; see box_refinement.h).
 constexpr std::size_t kLeafCandidates = 6;
 // The quadruple cache holds at most about this many quadruples (each up to two vertices, ~0.5 KB).
 constexpr std::size_t kCachedQuadruples = 8192;

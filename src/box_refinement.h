@@ -1,15 +1,17 @@
-// Steps 2 and 3 of the octree (paper sections 5.2.1-5.2.2): a seed box and its candidates are split into
-// 8 until at most four candidates remain, and every leaf is decided exactly.
+// Step 3 of the octree (paper sections 5.2.1-5.2.2): a seed box and its candidates are split into 8
+// until few candidates remain, and every leaf is decided exactly.
 //
-// At every box, each candidate is tested against the box's best candidates (least d at the centre):
-// centre_expansion.h first, then the exact predicate dominates_on_box (paper Theorem 6 on the box). A
-// removed site is strictly farther than another site at every point of the box, so the candidates stay a
-// superset of the owners of every point of the box. A leaf with four candidates therefore needs no
-// conflict test: a vertex of those four that lies in the leaf has exactly them as its tie set.
+// At every box, each candidate is tested against the box's best candidates (least d at the centre) with
+// the certified tests of centre_expansion.h. A removed site is strictly farther than another site at every
+// point of the box, so the candidates stay a superset of the owners of every point of the box. A leaf
+// enumerates the quadruples of its candidates (cached per thread: neighbouring leaves share them) and
+// keeps the vertices that lie in it; their tie sets are among its candidates. The paper stops at four
+// candidates; a leaf of up to six (fifteen quadruples, mostly cached) costs less than the levels of
+// refinement that separating the fifth and sixth would take.
 //
-// Degenerate input (five or more sites tangent to one sphere, lattices) can keep five or more candidates
-// in arbitrarily small boxes; such a box becomes a leaf once refining stops helping, and its quadruples are
-// enumerated and decided exactly (leaf_decision.h). No vertex is dropped: every leaf is decided exactly.
+// Degenerate input (five or more sites tangent to one sphere, lattices) can keep more candidates in
+// arbitrarily small boxes; such a box becomes a leaf once refining stops helping. No vertex is dropped:
+// every leaf is decided exactly.
 #pragma once
 
 #include <vector>

@@ -1,8 +1,10 @@
-// Step 1 of the octree (paper section 5.2.1): the candidate sites of every seed box, propagated in
-// Dijkstra order (key: a lower bound of the site's weighted distance over the box) from each site's home
-// box to face neighbours. A site enters a box unless one of the box's best candidates certainly dominates
-// it there (centre_expansion.h, then the exact predicate dominates_on_box); only a site that entered a box
-// moves on to its neighbours.
+// Step 2 of the octree (paper section 5.2.1): the candidate sites of every seed box, in two passes.
+//  1. The paper's distance propagation: sites spread from their home boxes to face neighbours in
+//     Dijkstra order of their weighted distance at the box centres, and each box keeps the first three
+//     that reach it as its witnesses (usually its nearest sites; which ones matters for speed only).
+//  2. Each site floods from its home box through face neighbours, entering every box where no witness
+//     certainly dominates it (centre_expansion.h); only a box it entered passes it on. The floods are
+//     independent, so they run in parallel; the lists are sorted, so every thread count gives the same.
 //
 // Completeness: a site owning a point x also owns the segment from its centre to x (cells are star-shaped,
 // paper Theorem 2). The closed boxes that the segment crosses are linked through face neighbours that also

@@ -1,24 +1,24 @@
 // Vertex location by adaptive octree subdivision (paper section 5.2), with every decision exact.
 //
-//  1. Seed cubes: a grid over a box G holding every site centre strictly inside. Sites propagate to
-//     neighbouring grid cells in Dijkstra order (key: a lower bound of the weighted distance to the cell);
-//     a site enters a cell unless the cell's best site certainly dominates it there (lipschitz_filter.h,
-//     then predicate dominates_on_box).
-//  2. Far field: the sites whose cells reach the boundary of G (the escaping sites) own every point outside
-//     G. The root box R contains G and a ball 2 * 256 times G's half-extent; vertices beyond R are found by
-//     the direction analysis of far_field.h.
-//  3. Every box of R is refined until it has at most 6 candidate sites, or cannot usefully be refined;
-//     a leaf enumerates the quadruples of its candidates and keeps the vertices that lie in it (half-open).
+//  0. Sites whose extent is far from 1 are first scaled by a power of two (scale_normalization.h).
+//  1. Seed boxes (seed_partition.h): cubes of side 2^e over the box G of the site centres, and graded
+//     shells of doubling cubes around G out to the root box R, 32 times G's size.
+//  2. Candidates (candidate_propagation.h): the paper's distance propagation finds a few near sites of
+//     each seed box; every site then floods through face neighbours into the boxes where none of those
+//     certainly dominates it.
+//  3. Refinement (box_refinement.h): each seed box and its candidates are split into 8 until at most six
+//     candidates remain (or refining stops helping, on degenerate input); each leaf decides the
+//     quadruples of its candidates exactly, keeping the vertices that lie in it (half-open).
+//  4. Far field (far_field.h): the vertices beyond R, by directions.
 //
-// Completeness: a site owning a point x also owns the segment from its centre to x (cells are star-shaped,
-// paper Theorem 2), so propagation through the 26 neighbours reaches every cell where it owns a point, and
-// a site owning a point outside G owns a point of a boundary cell; removals are certified, so candidate
-// sets are supersets of the owners; every vertex of R lies in exactly one half-open leaf (the upper faces
-// of R are closed), whose candidates include its whole tie set; every vertex outside R is found by
-// far_field.h.
+// Completeness. Removing a candidate is certified (centre_expansion.h): the site is strictly farther than
+// another at every point of the box. So every box's candidates include every site that owns a point of
+// it: the seed boxes by the star-shaped argument of candidate_propagation.h, their sub-boxes because
+// removal is certified. A vertex of R lies in exactly one half-open leaf (the upper faces of R are
+// closed), whose candidates include its whole tie set; a vertex outside R is found by far_field.h, from the
+// candidates of the boxes on R's boundary, which include every site owning a point outside R.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "axis_box.h"
