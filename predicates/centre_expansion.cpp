@@ -67,7 +67,7 @@ void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame) {
 }
 
 bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
-                   double rho_i, const Box_frame& frame, double linear) {
+                   double rho_i, const Box_frame& frame, double linear, double slack) {
   const double gap = at_i.weighted - at_j.weighted;
   const double dx = i.x - j.x, dy = i.y - j.y, dz = i.z - j.z;
   const double separation_squared = dx * dx + dy * dy + dz * dz;
@@ -81,7 +81,7 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
   const double lipschitz = rho_sum > 0 ? std::min(2.0, 2 * separation / rho_sum) : 2.0;
   const double bound = std::min(lipschitz * frame.reach, linear + curvature);
   // The slack covers the rounding errors of f(c) and of the bound (ERROR_BOUNDS.md, "Centre expansion").
-  return bound + 64 * kUnit * (bound + frame.reach + at_i.magnitude + at_j.magnitude + gap) < gap;
+  return bound + slack * 64 * kUnit * (bound + frame.reach + at_i.magnitude + at_j.magnitude + gap) < gap;
 }
 
 }  // namespace apollonius

@@ -14,7 +14,8 @@
 //      the norm of Hess d_i - Hess d_j: both sites far from the box, their curvatures nearly cancel.
 //
 // Both are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
-// only ever certify; a site they cannot remove stays a candidate.
+// only ever certify; a site they cannot remove stays a candidate. The `slack` argument multiplies those
+// bounds: 1 on the certified path, 0 on the floating path (kernels.h).
 #pragma once
 
 #include <array>
@@ -84,37 +85,38 @@ void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
 // The computed distance from x_s to the box of `frame` (rho_s), or -1 out of range.
 double distance_to_box(const Site& s, const Box_frame& frame);
 
-// Test (A). The slack covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
-inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame) {
+// Test (A). The margin covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
+inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
+                             double slack) {
   constexpr double kUnit = 0x1p-53;
   if (!at_i.usable || !at_j.usable) return false;
-  const double slack = 32 * kUnit * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
+  const double margin = slack * 32 * kUnit * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
   double term[2][3];
   for (int a = 0; a < 3; ++a)
     for (int side = 0; side < 2; ++side) term[side][a] = at_i.gradient[a] * frame.corner_offset[side][a];
   for (int q = 0; q < 8; ++q) {
     const double value = at_i.weighted + term[q & 1][0] + term[q >> 1 & 1][1] + term[q >> 2 & 1][2] - at_j.corner[q];
-    if (!(value > slack)) return false;  // a NaN certifies nothing either
+    if (!(value > margin)) return false;  // a NaN certifies nothing either
   }
   return true;
 }
 
 // Test (B), given linear = sum_a |g_a| h_a; rho_i is distance_to_box(i, frame).
 bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
-                   double rho_i, const Box_frame& frame, double linear);
+                   double rho_i, const Box_frame& frame, double linear, double slack);
 
 // True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
 // at_j.has_corners. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
 inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                const Centre_expansion& at_i, const Box_frame& frame, double& rho_i) {
+                                const Centre_expansion& at_i, const Box_frame& frame, double& rho_i, double slack) {
   if (!at_i.usable || !at_j.usable || !(at_i.weighted > at_j.weighted)) return false;
-  if (corners_dominate(at_j, at_i, frame)) return true;
+  if (corners_dominate(at_j, at_i, frame, slack)) return true;
   // Both bounds of (B) are at least sum_a |g_a| h_a.
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
   if (!(at_i.weighted - at_j.weighted > linear)) return false;
   if (rho_i < 0) rho_i = distance_to_box(i, frame);
-  return far_dominates(j, at_j, i, at_i, rho_i, frame, linear);
+  return far_dominates(j, at_j, i, at_i, rho_i, frame, linear, slack);
 }
 
 }  // namespace apollonius

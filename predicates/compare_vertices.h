@@ -8,15 +8,21 @@
 
 namespace apollonius {
 
+inline Sign compare_numbers(double x, double y) { return certain_sign(x - y); }
 inline Sign compare_numbers(const Interval& x, const Interval& y) { return certain_sign(x - y); }
 inline Sign compare_numbers(const Root_number<Exact>& x, const Root_number<Exact>& y) { return compare(x, y); }
 
 template <class NT>
 auto absolute_point(const Vertex& v) {
-  if constexpr (std::is_same_v<NT, Interval>)
+  if constexpr (std::is_same_v<NT, Interval>) {
     return v.point_interval();
-  else
+  } else if constexpr (std::is_same_v<NT, double>) {
+    const auto X = coordinates_for<double>(v);
+    const Site& o = v.origin();
+    return std::array<double, 4>{o.x + X.scaled[0] / 2, o.y + X.scaled[1] / 2, o.z + X.scaled[2] / 2, X.scaled[3] / 2 - o.w};
+  } else {
     return exact_point(v);
+  }
 }
 
 struct Compare_vertices_predicate {

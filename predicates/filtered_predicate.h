@@ -34,6 +34,13 @@ class Filtered_predicate {
     return Predicate::template evaluate<Exact>(args...);
   }
 
+  // The floating path: the predicate in plain doubles, no filter and no exact stage.
+  template <class... Args>
+  auto floating(const Args&... args) const {
+    counter().count_evaluation();
+    return Predicate::template evaluate<double>(args...);
+  }
+
   template <class P, class... Args>
   static constexpr auto has_static_filter(int) -> decltype(P::static_filter(std::declval<const Args&>()...), true) {
     return true;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <boost/container/static_vector.hpp>
+#include <cmath>
 
 #include "vertex.h"
 
@@ -58,6 +59,15 @@ inline Vertex_coordinates<Double_with_error> coordinates_on_line(const Quadruple
                                                                  const Root_number<Double_with_error>& lambda) {
   const Double_with_error l = (lambda.a + lambda.b * sqrt(lambda.d)) / lambda.denominator;
   Vertex_coordinates<Double_with_error> V;
+  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
+  return V;
+}
+
+// The same in plain doubles, for the floating path.
+inline Vertex_coordinates<double> coordinates_on_line(const Quadruple_line<double>& line,
+                                                      const Root_number<double>& lambda) {
+  const double l = (lambda.a + lambda.b * std::sqrt(lambda.d)) / lambda.denominator;
+  Vertex_coordinates<double> V;
   for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
   return V;
 }

@@ -1,4 +1,5 @@
-// The two number types of the staged evaluation, and the sign function each stage uses.
+// The two number types of the staged evaluation, and the sign function each stage uses (plus plain doubles,
+// for the floating path).
 //  - Interval: CGAL::Interval_nt<false>, valid only inside a Rounding_guard. Its sign is certain or throws.
 //  - Exact: CGAL::Gmpzf, a GMP mantissa times 2^exponent. Every double is one exactly, and +, -, * are
 //    exact, so every predicate is written division-free.
@@ -22,6 +23,9 @@ inline Sign certain_sign(const Interval& x) {
 }
 
 inline Sign certain_sign(const Exact& x) { return static_cast<Sign>(static_cast<int>(x.sign())); }
+
+// The floating path (`--arith float`, no filter and no exact stage): the computed sign, taken as it is.
+inline Sign certain_sign(double x) { return x > 0 ? Sign::POSITIVE : x < 0 ? Sign::NEGATIVE : Sign::ZERO; }
 
 // An interval that contains x, valid in any rounding mode and beyond the double range (then one bound is
 // infinite or zero). CGAL's own to_interval(Gmpzf) is not used: it maps values above the double range to

@@ -61,6 +61,10 @@ std::array<Root_number<Exact>, 4> exact_point(const Vertex& v) {
 
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X) { return Vertex(q, root, X.scaled); }
 
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<double> X) {
+  return Vertex(q, root, {Interval(X.scaled[0]), Interval(X.scaled[1]), Interval(X.scaled[2]), Interval(X.scaled[3])});
+}
+
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with_error> X) {
   return Vertex(q, root, {enclosing_interval(X.scaled[0]), enclosing_interval(X.scaled[1]), enclosing_interval(X.scaled[2]),
                           enclosing_interval(X.scaled[3])});

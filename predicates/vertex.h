@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <type_traits>
 
 #include "double_with_error.h"
 #include "quadratic.h"
@@ -42,6 +43,15 @@ struct Vertex_coordinates<Double_with_error> {
   std::array<Double_with_error, 4> scaled;
   Double_with_error denominator{1};
   Sign sign(const Double_with_error& e) const { return certain_sign(e); }
+};
+
+// The floating path's vertices: plain doubles, held in the vertex's (degenerate) interval box.
+template <>
+struct Vertex_coordinates<double> {
+  using Element = double;
+  std::array<double, 4> scaled;
+  double denominator = 1;
+  Sign sign(double e) const { return certain_sign(e); }
 };
 
 template <>
@@ -90,6 +100,18 @@ inline const Vertex_coordinates<Interval>& Vertex::coordinates<Interval>() const
 }
 template <>
 const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const;
+
+// The coordinates X of a vertex in the arithmetic NT: a reference for Interval and Exact, a value for double
+// (the floating path's vertices, whose interval box is a point).
+template <class NT>
+decltype(auto) coordinates_for(const Vertex& v) {
+  if constexpr (std::is_same_v<NT, double>) {
+    const auto& box = v.coordinates<Interval>().scaled;
+    return Vertex_coordinates<double>{{box[0].inf(), box[1].inf(), box[2].inf(), box[3].inf()}};
+  } else {
+    return v.coordinates<NT>();
+  }
+}
 
 // The exact centre and r of the vertex: x, y, z, r, each (a + b sqrt d) / denominator.
 std::array<Root_number<Exact>, 4> exact_point(const Vertex& v);

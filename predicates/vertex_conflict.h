@@ -16,7 +16,7 @@ struct Vertex_conflict_predicate {
 
   template <class NT>
   static Sign evaluate(const Vertex& v, const Site& s) {
-    const Vertex_coordinates<NT>& X = v.coordinates<NT>();
+    const auto& X = coordinates_for<NT>(v);
     const Relative_site<NT> a = relative_site<NT>(v.origin(), s);
     if (X.sign(X.scaled[3] + X.denominator * (NT(2) * a.row[3])) == Sign::NEGATIVE) return Sign::POSITIVE;
     return X.sign(X.denominator * a.rhs - (X.scaled[0] * a.row[0] + X.scaled[1] * a.row[1] +

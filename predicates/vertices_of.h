@@ -30,6 +30,7 @@ bool is_valid_root(const Vertex_coordinates<NT>& X, const Quadruple& q) {
   return true;
 }
 
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<double> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with_error> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X);

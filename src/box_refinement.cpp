@@ -3,9 +3,8 @@
 #include <algorithm>
 
 #include "box_distance.h"
+#include "kernels.h"
 #include "rounding_guard.h"
-#include "vertex_conflict.h"
-#include "vertex_in_box.h"
 
 namespace apollonius {
 namespace {
@@ -59,21 +58,24 @@ Children split(const Axis_box& box) {
 
 }  // namespace
 
-void Box_refinement::find_vertices(const Axis_box& box, const std::vector<Site_index>& candidates,
+template <class Kernel>
+void Box_refinement<Kernel>::find_vertices(const Axis_box& box, const std::vector<Site_index>& candidates,
                                    std::vector<Found_vertex>& out) {
   stack_.assign(candidates.begin(), candidates.end());
   cache_.limit(kCachedQuadruples);
   refine(box, 0, 0, 0, out);
 }
 
-Refinement_counts Box_refinement::counts() const {
+template <class Kernel>
+Refinement_counts Box_refinement<Kernel>::counts() const {
   Refinement_counts counts = counts_;
   counts.quadruples = cache_.lookups();
   counts.distinct_quadruples = cache_.misses();
   return counts;
 }
 
-void Box_refinement::refine(const Axis_box& box, std::size_t first, int depth, int stagnant,
+template <class Kernel>
+void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int depth, int stagnant,
                             std::vector<Found_vertex>& out) {
   const std::size_t end = stack_.size();
   ++counts_.boxes;
@@ -96,7 +98,8 @@ void Box_refinement::refine(const Axis_box& box, std::size_t first, int depth, i
   stack_.resize(end);
 }
 
-void Box_refinement::keep_undominated(const Axis_box& box, std::size_t first, std::size_t end) {
+template <class Kernel>
+void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t first, std::size_t end) {
   const Box_frame frame = frame_of(box);
   const std::size_t count = end - first;
   expansion_.resize(count);
@@ -124,13 +127,14 @@ void Box_refinement::keep_undominated(const Axis_box& box, std::size_t first, st
     for (std::size_t w = 0; w < witnesses && !dominated && at_witness[w].weighted < expansion_[k].weighted; ++w) {
       const Site& j = sites_[stack_[first + witness[w]]];
       if (!at_witness[w].has_corners) add_corners(at_witness[w], j, frame);  // only witnesses that get used
-      dominated = expansion_dominates(j, at_witness[w], s, expansion_[k], frame, rho);
+      dominated = expansion_dominates(j, at_witness[w], s, expansion_[k], frame, rho, Kernel::filter_slack);
     }
     if (!dominated) stack_.push_back(stack_[first + k]);
   }
 }
 
-bool Box_refinement::tiny_against_candidates(const Axis_box& box, std::size_t first) const {
+template <class Kernel>
+bool Box_refinement<Kernel>::tiny_against_candidates(const Axis_box& box, std::size_t first) const {
   Rounding_guard guard;
   Interval scaled_half_diagonal_squared(0);
   for (int a = 0; a < 3; ++a)
@@ -140,7 +144,8 @@ bool Box_refinement::tiny_against_candidates(const Axis_box& box, std::size_t fi
   });
 }
 
-void Box_refinement::decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
+template <class Kernel>
+void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
   const std::size_t k = stack_.size() - first, leaf_start = out.size();
   ++counts_.leaves;
   counts_.leaf_candidates += k;
@@ -154,21 +159,24 @@ void Box_refinement::decide_leaf(const Axis_box& box, std::size_t first, std::ve
         for (std::size_t d = c + 1; d < k; ++d) {
           const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
           for (const Vertex& v : cache_.vertices_of_quadruple(quadruple, sites_).vertices) {
-            if (!vertex_in_box(v, box, closed_above)) continue;
+            if (!Kernel::in_box(v, box, closed_above)) continue;
             // The candidates include every owner of the vertex: its tie set is among them.
             tie_.assign(quadruple.begin(), quadruple.end());
             bool closer = false;
             for (std::size_t o = 0; o < k && !closer; ++o) {
               if (o == a || o == b || o == c || o == d) continue;
-              const Sign sign = vertex_conflict(v, sites_[leaf[o]]);
+              const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
               closer = sign == Sign::NEGATIVE;
               if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
             }
             if (closer) continue;
             std::sort(tie_.begin(), tie_.end());
-            append_unique(out, leaf_start, {tie_, v});
+            append_unique<Kernel>(out, leaf_start, {tie_, v});
           }
         }
 }
+
+template class Box_refinement<Certified_kernel>;
+template class Box_refinement<Floating_kernel>;
 
 }  // namespace apollonius

@@ -28,7 +28,8 @@ struct Refinement_counts {
   std::size_t boxes = 0, leaves = 0, leaf_candidates = 0, quadruples = 0, distinct_quadruples = 0;
 };
 
-// Work space for refining boxes, one per thread.
+// Work space for refining boxes, one per thread. Kernel: kernels.h.
+template <class Kernel>
 class Box_refinement {
  public:
   // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
@@ -53,7 +54,7 @@ class Box_refinement {
   std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
   std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
   std::vector<Site_index> tie_;
-  Quadruple_cache cache_;
+  Quadruple_cache<Kernel> cache_;
   Refinement_counts counts_;
 };
 

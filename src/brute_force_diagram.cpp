@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "compare_vertices.h"
+#include "kernels.h"
 #include "site_set.h"
 #include "vertex_conflict.h"
 #include "vertices_of.h"
@@ -34,7 +35,7 @@ bool tie_set_of(const Vertex& v, const std::vector<Site>& sites, const std::vect
 }  // namespace
 
 Diagram brute_force_diagram(const std::vector<Site>& sites) {
-  std::vector<Hidden_site> hidden = classify_hidden_sites(sites);
+  std::vector<Hidden_site> hidden = classify_hidden_sites<Certified_kernel>(sites);
   const std::vector<Site_index> active = active_sites(sites.size(), hidden);
   const std::size_t n = active.size();
 
@@ -66,7 +67,7 @@ Diagram brute_force_diagram(const std::vector<Site>& sites) {
     }
     i = end;
   }
-  return assemble_diagram(sites.size(), std::move(hidden), std::move(unique));
+  return assemble_diagram<Certified_kernel>(sites.size(), std::move(hidden), std::move(unique));
 }
 
 }  // namespace apollonius

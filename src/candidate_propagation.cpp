@@ -73,13 +73,13 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
 }
 
 // Whether a witness of box b certainly dominates site s on it (centre_expansion.h).
-bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size_t b, Site_index s) {
+bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size_t b, Site_index s, double slack) {
   const auto& held = graph.witnesses[b];
   if (held.empty()) return false;
   const Centre_expansion at_s = expand_at_centre(sites[s], graph.frame[b]);
   double rho = -1;
   for (const auto& [w, at_w] : held)
-    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, graph.frame[b], rho)) return true;
+    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, graph.frame[b], rho, slack)) return true;
   return false;
 }
 
@@ -93,14 +93,14 @@ struct Flood {
 };
 
 void flood(Flood& f, const Box_graph& graph, const std::vector<Site>& sites, const Seed_partition& partition,
-           Site_index s) {
+           Site_index s, double slack) {
   const std::size_t home = partition.home(sites[s]);
   f.last_visitor[home] = s;
   f.stack.assign(1, home);
   while (!f.stack.empty()) {
     const std::size_t b = f.stack.back();
     f.stack.pop_back();
-    if (dominated(graph, sites, b, s)) continue;
+    if (dominated(graph, sites, b, s, slack)) continue;
     f.entered.emplace_back(b, s);
     for (std::size_t k = graph.neighbour_start[b]; k < graph.neighbour_start[b + 1]; ++k) {
       const std::size_t next = graph.neighbours[k];
@@ -115,13 +115,13 @@ void flood(Flood& f, const Box_graph& graph, const std::vector<Site>& sites, con
 
 std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
                                                           const std::vector<Site_index>& active,
-                                                          const Seed_partition& partition) {
+                                                          const Seed_partition& partition, double slack) {
   Box_graph graph(partition);
   find_witnesses(graph, sites, active, partition);
 
   tbb::enumerable_thread_specific<Flood> floods(partition.id_count());
   tbb::parallel_for(std::size_t{0}, active.size(), [&](std::size_t k) {
-    flood(floods.local(), graph, sites, partition, active[k]);
+    flood(floods.local(), graph, sites, partition, active[k], slack);
   });
   std::vector<std::size_t> count(partition.id_count(), 0);
   for (const Flood& f : floods)

@@ -19,9 +19,10 @@
 
 namespace apollonius {
 
-// candidates[id] for every box identifier of the partition (empty for unused identifiers).
+// candidates[id] for every box identifier of the partition (empty for unused identifiers). `slack`
+// multiplies the rounding-error slack of the filters: 1 certified, 0 on the floating path (kernels.h).
 std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
                                                           const std::vector<Site_index>& active,
-                                                          const Seed_partition& partition);
+                                                          const Seed_partition& partition, double slack);
 
 }  // namespace apollonius

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 
-#include "compare_vertices.h"
-#include "vertex_rounding.h"
-#include "vertex_in_box.h"
+#include "kernels.h"
 
 namespace apollonius {
 
+template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
                          std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices) {
   Diagram diagram;
@@ -15,14 +14,14 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   diagram.hidden = std::move(hidden);
   diagram.vertices.reserve(vertices.size());
   for (auto& [tie_set, vertex] : vertices) {
-    const std::array<double, 4> rounded = rounded_coordinates(vertex);
+    const std::array<double, 4> rounded = Kernel::printed_coordinates(vertex);
     diagram.vertices.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
   }
   // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.
   std::sort(diagram.vertices.begin(), diagram.vertices.end(), [](const Diagram_vertex& u, const Diagram_vertex& v) {
     if (u.tie_set != v.tie_set) return u.tie_set < v.tie_set;
     if (u.rounded != v.rounded) return u.rounded < v.rounded;
-    return compare_vertices(u.vertex, v.vertex) == Sign::NEGATIVE;
+    return Kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
   });
 
   std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);
@@ -33,6 +32,11 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
     if (!has_vertex[s] && !is_hidden_site[s]) diagram.sites_without_vertex.push_back(s);
   return diagram;
 }
+
+template Diagram assemble_diagram<Certified_kernel>(std::size_t, std::vector<Hidden_site>,
+                                                   std::vector<std::pair<std::vector<Site_index>, Vertex>>);
+template Diagram assemble_diagram<Floating_kernel>(std::size_t, std::vector<Hidden_site>,
+                                                  std::vector<std::pair<std::vector<Site_index>, Vertex>>);
 
 void restrict_to_box(Diagram& diagram, const Axis_box& box) {
   const auto outside = [&](const Diagram_vertex& v) { return !vertex_in_box(v.vertex, box, std::array<bool, 3>{true, true, true}); };

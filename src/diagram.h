@@ -39,6 +39,8 @@ struct Diagram {
 void restrict_to_box(Diagram& diagram, const Axis_box& box);
 
 // Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
+// Kernel: kernels.h (the certified one, unless for the floating path).
+template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
                          std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices);
 

@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
+#include "kernels.h"
 #include "leaf_decision.h"
 #include "rounding_guard.h"
-#include "vertex_in_box.h"
 
 namespace apollonius {
 namespace {
@@ -37,12 +38,23 @@ struct Offset {
   Interval norm_squared, norm;
 };
 
+// The certified far field rounds its intervals outwards; the floating path (kernels.h) evaluates the same
+// formulas in round-to-nearest, as plain doubles would.
+template <class Kernel>
+struct Far_field_rounding {
+  std::optional<Rounding_guard> guard;
+  Far_field_rounding() {
+    if constexpr (Kernel::rounds_outwards) guard.emplace();
+  }
+};
+
+template <class Kernel>
 class Far_field {
  public:
   Far_field(const std::vector<Site>& sites, const std::vector<Site_index>& escaping, const std::array<double, 3>& origin,
             double radius, const Axis_box& root)
       : sites_(sites), escaping_(escaping), radius_(radius), root_(root), offsets_(sites.size()) {
-    Rounding_guard guard;
+    const Far_field_rounding<Kernel> rounding;
     for (Site_index i : escaping) {
       Offset& o = offsets_[i];
       o.a = {Interval(sites[i].x) - Interval(origin[0]), Interval(sites[i].y) - Interval(origin[1]),
@@ -55,7 +67,7 @@ class Far_field {
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
     std::vector<Site_index> kept;
     {
-      Rounding_guard guard;
+      const Far_field_rounding<Kernel> rounding;
       // u.a + w over the directions of the patch: y = (side, s, t) in face coordinates, u = y / |y|.
       const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
       const Interval S(p.s0, p.s1), T(p.t0, p.t1);
@@ -134,6 +146,7 @@ class Far_field {
 
 }  // namespace
 
+template <class Kernel>
 std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root) {
   if (escaping.size() < 4) return {};
@@ -141,7 +154,7 @@ std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std
   // their quadruples, so those are collected first and each is decided once.
   std::vector<std::vector<Quadruple_key>> by_face(6);
   tbb::parallel_for(0, 6, [&](int face) {
-    Far_field field(sites, escaping, origin, radius, root);
+    Far_field<Kernel> field(sites, escaping, origin, radius, root);
     field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, escaping);
     by_face[face] = field.take_quadruples();
   });
@@ -155,9 +168,9 @@ std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std
   std::vector<std::vector<Found_vertex>> found(quadruples.size());
   tbb::parallel_for(std::size_t{0}, quadruples.size(), [&](std::size_t q) {
     const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
-    decide_quadruples(sites, quadruple, escaping,
-                      [&](const Vertex& v) { return !vertex_in_box(v, root, std::array<bool, 3>{true, true, true}); },
-                      found[q], 0);
+    decide_quadruples<Kernel>(sites, quadruple, escaping,
+                              [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); },
+                              found[q], 0);
   });
   // A vertex with five or more tied sites is found from several of their quadruples: kept once.
   std::vector<Found_vertex> vertices;
@@ -169,10 +182,15 @@ std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std
     std::size_t end = i;
     while (end < vertices.size() && vertices[end].first == vertices[i].first) ++end;
     const std::size_t group = unique.size();
-    for (std::size_t k = i; k < end; ++k) append_unique(unique, group, std::move(vertices[k]));
+    for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
     i = end;
   }
   return unique;
 }
+
+template std::vector<Found_vertex> far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
+                                                                 const std::array<double, 3>&, double, const Axis_box&);
+template std::vector<Found_vertex> far_vertices<Floating_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
+                                                                const std::array<double, 3>&, double, const Axis_box&);
 
 }  // namespace apollonius

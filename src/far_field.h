@@ -21,9 +21,10 @@
 
 namespace apollonius {
 
-// Every vertex of the diagram outside the closed root box, with its tie set. `escaping` must contain every
+// Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping` must contain every
 // site that owns a point outside the box, and the root box must contain the ball of radius `radius`
 // about `origin`.
+template <class Kernel>
 std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root);
 

@@ -10,6 +10,7 @@
 #include "box_refinement.h"
 #include "candidate_propagation.h"
 #include "far_field.h"
+#include "kernels.h"
 #include "scale_normalization.h"
 #include "seed_partition.h"
 #include "site_set.h"
@@ -34,14 +35,13 @@ class Lap_timer {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-}  // namespace
-
-Diagram octree_diagram(const std::vector<Site>& input_sites, const Octree_options& options) {
+template <class Kernel>
+Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_options& options) {
   Octree_statistics statistics;
   Lap_timer timer;
-  std::vector<Hidden_site> hidden = classify_hidden_sites(input_sites);
+  std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites);
   const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
-  if (active.size() < 4) return assemble_diagram(input_sites.size(), std::move(hidden), {});
+  if (active.size() < 4) return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {});
   const int exponent = normalizing_exponent(input_sites, active);
   const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
   const std::vector<Site>& sites = exponent == 0 ? input_sites : normalized;
@@ -53,7 +53,8 @@ Diagram octree_diagram(const std::vector<Site>& input_sites, const Octree_option
   std::vector<Found_vertex> vertices;
   tbb::task_arena arena(std::max(1, options.threads));  // every parallel step runs inside: --threads holds
   arena.execute([&] {
-    const std::vector<std::vector<Site_index>> candidates = propagate_candidates(sites, active, partition);
+    const std::vector<std::vector<Site_index>> candidates =
+        propagate_candidates(sites, active, partition, Kernel::filter_slack);
     statistics.propagation_seconds = timer.lap();
 
     // The sites owning a point outside R own a point of its boundary, so they are candidates of the boxes
@@ -72,11 +73,11 @@ Diagram octree_diagram(const std::vector<Site>& input_sites, const Octree_option
     statistics.escaping_sites = escaping.size();
 
     found.resize(seeds.size());
-    tbb::enumerable_thread_specific<Box_refinement> refinement(sites, partition.root_box());
+    tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box());
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
       refinement.local().find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
     });
-    for (const Box_refinement& r : refinement) {
+    for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();
       statistics.boxes += counts.boxes;
       statistics.leaves += counts.leaves;
@@ -85,16 +86,23 @@ Diagram octree_diagram(const std::vector<Site>& input_sites, const Octree_option
       statistics.distinct_quadruples += counts.distinct_quadruples;
     }
     statistics.refinement_seconds = timer.lap();
-    vertices = far_vertices(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
+    vertices = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
     statistics.far_field_seconds = timer.lap();
   });
   for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(vertices));
   if (exponent != 0)
     for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
-  Diagram diagram = assemble_diagram(sites.size(), std::move(hidden), std::move(vertices));
+  Diagram diagram = assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices));
   statistics.assembly_seconds = timer.lap();
   if (options.statistics) *options.statistics = statistics;
   return diagram;
+}
+
+}  // namespace
+
+Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options) {
+  return options.arithmetic == Arithmetic::certified ? octree_diagram_with<Certified_kernel>(sites, options)
+                                                     : octree_diagram_with<Floating_kernel>(sites, options);
 }
 
 }  // namespace apollonius

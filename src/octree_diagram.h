@@ -34,9 +34,14 @@ struct Octree_statistics {
               quadruples = 0, distinct_quadruples = 0;
 };
 
+// Certified: every decision exact (the default). Floating: the same algorithm in plain doubles, no filter
+// and no exact stage (kernels.h), for crosscheck and to measure what exactness costs.
+enum class Arithmetic { certified, floating };
+
 struct Octree_options {
   int threads = 1;
   Octree_statistics* statistics = nullptr;  // filled in when not null
+  Arithmetic arithmetic = Arithmetic::certified;
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

@@ -13,6 +13,8 @@ namespace apollonius {
 
 // Invariant: slots_ has a power-of-two size at least twice entries_.size(); a slot is empty (entry 0) or
 // holds the key and 1 + the index of an entry whose key hashes there or, by linear probing, after it.
+// Kernel: kernels.h.
+template <class Kernel>
 class Quadruple_cache {
  public:
   // The vertices of the quadruple of `sorted` (ascending site indices).

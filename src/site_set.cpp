@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <numeric>
 
-#include "is_hidden.h"
+#include "kernels.h"
 #include "rounding_guard.h"
 
 namespace apollonius {
 
+template <class Kernel>
 std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
   const std::size_t n = sites.size();
   std::vector<Hidden_site> hidden;
@@ -39,14 +40,17 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n && !certainly_apart(by_x[a], by_x[b]); ++b) {
       const Site_index i = by_x[a], j = by_x[b];
-      if (is_hidden(sites[i], i, sites[j], j)) record(i, j);
-      if (is_hidden(sites[j], j, sites[i], i)) record(j, i);
+      if (Kernel::hidden(sites[i], i, sites[j], j)) record(i, j);
+      if (Kernel::hidden(sites[j], j, sites[i], i)) record(j, i);
     }
   }
   for (Site_index i = 0; i < n; ++i)
     if (is_hidden_site[i]) hidden.push_back(by_site[i]);
   return hidden;
 }
+
+template std::vector<Hidden_site> classify_hidden_sites<Certified_kernel>(const std::vector<Site>&);
+template std::vector<Hidden_site> classify_hidden_sites<Floating_kernel>(const std::vector<Site>&);
 
 std::vector<Site_index> active_sites(std::size_t site_count, const std::vector<Hidden_site>& hidden) {
   std::vector<bool> is_hidden_site(site_count, false);

@@ -10,7 +10,9 @@
 namespace apollonius {
 
 // Every hidden site, ascending. hidden_by is the first identical earlier site for a duplicate, otherwise
-// the smallest index of a site that hides it.
+// the smallest index of a site that hides it. Kernel: kernels.h (the certified one, unless for the
+// floating path).
+template <class Kernel>
 std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites);
 
 // The indices of the sites not in `hidden`, ascending.

@@ -7,6 +7,7 @@
 
 #include "brute_force_diagram.h"
 #include "certify_command.h"
+#include "crosscheck_command.h"
 #include "cli/arguments.h"
 #include "cli/generate_command.h"
 #include "octree_diagram.h"
@@ -20,16 +21,19 @@ namespace {
 
 constexpr const char* kVerticesUsage =
     "usage: apollonius3d vertices INPUT [-o OUT] [--format text|json] [--algorithm octree|brute]\n"
-    "                             [--threads N] [--box X0 Y0 Z0 X1 Y1 Z1] [--stats]\n"
+    "                             [--arith certified|float] [--threads N] [--box X0 Y0 Z0 X1 Y1 Z1] [--stats]\n"
     "                             [--keep-hydrogens] [--keep-waters]\n"
     "  INPUT: balls text 'x y z w', vdrc .txt, PDB/mmCIF (optionally .gz), or - for stdin\n"
     "  Prints every vertex of the Apollonius diagram in R^3 (or in the closed --box): its tie-set site\n"
-    "  indices (0-based), then x y z r. --algorithm brute is the O(n^5) reference.\n";
+    "  indices (0-based), then x y z r. --algorithm brute is the O(n^5) reference. --arith float runs the\n"
+    "  octree in plain doubles, no filter and no exact stage: uncertified, for comparison only.\n";
 
 constexpr const char* kExitCodes =
-    "exit codes: 0 ok, 1 certify found discrepancies, 2 usage or input error, 3 internal error\n";
+    "exit codes: 0 ok, 1 discrepancies (certify, crosscheck), 2 usage or input error, 3 internal error\n";
 
-void print_usage(std::ostream& out) { out << kVerticesUsage << certify_usage << generate_usage << kExitCodes; }
+void print_usage(std::ostream& out) {
+  out << kVerticesUsage << certify_usage << crosscheck_usage << generate_usage << kExitCodes;
+}
 
 struct Vertices_command {
   std::string input;
@@ -38,6 +42,7 @@ struct Vertices_command {
   bool format_given = false;
   bool stats = false;
   bool brute_force = false;
+  Arithmetic arithmetic = Arithmetic::certified;
   int threads = 1;
   std::optional<Axis_box> box;
   Read_options read_options;
@@ -63,6 +68,11 @@ Vertices_command parse_vertices(const std::vector<std::string>& args) {
       if (algorithm != "brute" && algorithm != "octree")
         throw Usage_error("unknown algorithm '" + algorithm + "' (octree or brute)");
       command.brute_force = algorithm == "brute";
+    } else if (a == "--arith") {
+      const std::string& arithmetic = option_value(args, i);
+      if (arithmetic != "certified" && arithmetic != "float")
+        throw Usage_error("unknown arithmetic '" + arithmetic + "' (certified or float)");
+      command.arithmetic = arithmetic == "float" ? Arithmetic::floating : Arithmetic::certified;
     } else if (a == "--threads") {
       command.threads = parse_threads(option_value(args, i));
     } else if (a == "--box") {
@@ -85,6 +95,8 @@ Vertices_command parse_vertices(const std::vector<std::string>& args) {
     }
   }
   if (command.input.empty()) throw Usage_error("missing INPUT");
+  if (command.brute_force && command.arithmetic == Arithmetic::floating)
+    throw Usage_error("--arith float runs the octree only (--algorithm brute is the certified reference)");
   if (!command.format_given && ends_with(command.output, ".json")) command.format = "json";
   return command;
 }
@@ -111,7 +123,7 @@ int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::o
   Octree_statistics octree_statistics;
   Diagram diagram = command.brute_force
                         ? brute_force_diagram(input.sites)
-                        : octree_diagram(input.sites, Octree_options{command.threads, &octree_statistics});
+                        : octree_diagram(input.sites, Octree_options{command.threads, &octree_statistics, command.arithmetic});
   if (command.box) restrict_to_box(diagram, *command.box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
 
@@ -140,6 +152,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     }
     if (args[0] == "vertices") return run_vertices(args, out, err);
     if (args[0] == "certify") return run_certify(args, err);
+    if (args[0] == "crosscheck") return run_crosscheck(args, out, err);
     if (args[0] == "generate") return run_generate(args, out);
     throw Usage_error("unknown command '" + args[0] + "'");
   } catch (const Usage_error& e) {
