@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Certifies Voronota's vertex lists: `voronota calculate-vertices` on each input, then
-# `apollonius3d certify INPUT VORONOTA_OUTPUT --format voronota --report`, one Markdown table row per input.
+# The peers' record, one Markdown table row per input:
+#  --peer voronota (default): `voronota calculate-vertices` on each input, then
+#    `apollonius3d certify INPUT VORONOTA_OUTPUT --format voronota --report`;
+#  --peer float: `apollonius3d crosscheck INPUT`, our own octree in plain doubles against the certified one.
 # See bench/README.md. Usage: bench/certify_peers.sh --help
 set -euo pipefail
 
@@ -18,6 +20,7 @@ N=100
 SEED=1
 TIMEOUT=600          # seconds per run of either tool
 THREADS=1
+PEER=voronota        # voronota | float
 
 usage() {
   cat <<EOF
@@ -30,7 +33,8 @@ Usage: $0 [options]
                     left out, with a note, when the binary has no generate command
   --n N, --seed S   size and seed of the generated inputs (default: $N, $SEED)
   --timeout SECONDS limit per run of each tool (default: $TIMEOUT)
-  --threads N       for apollonius3d certify (default: $THREADS)
+  --threads N       for apollonius3d certify and crosscheck (default: $THREADS)
+  --peer NAME       voronota (certify its output) or float (crosscheck our float path); default: $PEER
   --work-dir DIR    inputs, outputs, reports (default: bench/work/certify)
 Env: BENCH_DATA_DIR (default ../shared/data), APOLLONIUS3D (binary), VORONOTA (binary).
 EOF
@@ -48,6 +52,7 @@ while [[ $# -gt 0 ]]; do
     --seed)     SEED=$2; shift 2 ;;
     --timeout)  TIMEOUT=$2; shift 2 ;;
     --threads)  THREADS=$2; shift 2 ;;
+    --peer)     PEER=$2; shift 2 ;;
     --work-dir) WORK_DIR=$2; shift 2 ;;
     -h|--help)  usage; exit 0 ;;
     *)          usage >&2; die "unknown option '$1'" ;;
@@ -55,7 +60,8 @@ while [[ $# -gt 0 ]]; do
 done
 [[ $TIMEOUT =~ ^[1-9][0-9]*$ ]] || die "--timeout must be a positive number of seconds"
 [[ $N =~ ^[1-9][0-9]*$ && $SEED =~ ^[0-9]+$ ]] || die "--n and --seed must be integers"
-command -v "$VORONOTA" >/dev/null || die "voronota not found ('$VORONOTA')"
+[[ $PEER == voronota || $PEER == float ]] || die "--peer must be voronota or float"
+[[ $PEER == float ]] || command -v "$VORONOTA" >/dev/null || die "voronota not found ('$VORONOTA')"
 [[ -x $APOLLONIUS ]] || die "apollonius3d not found at '$APOLLONIUS' (run scripts/build.sh)"
 mkdir -p "$WORK_DIR/inputs" "$WORK_DIR/out"
 
@@ -125,14 +131,40 @@ certify_input() {
        "$(count duplicate "$report") | $(count surplus "$report") $row_end $c_seconds |"
 }
 
+# crosscheck_input LABEL FILE_STEM BALLS: the table row of one input for --peer float.
+crosscheck_input() {
+  local label=$1 stem=$2 balls=$3 sites out summary
+  sites=$(awk 'NF >= 4 { n++ } END { print n + 0 }' "$balls")
+  out="$WORK_DIR/out/$stem.crosscheck.txt"
+  log "$label: $sites sites"
+  timed "$out" /dev/null "$APOLLONIUS" crosscheck "$balls" --threads "$THREADS"
+  summary=$(tail -n 1 "$out.stderr")
+  if [[ $summary != crosscheck:* ]]; then
+    echo "| $label | $sites | crosscheck: $STATUS | - | - | - | - | - | - | $SECONDS_TAKEN |"
+    return
+  fi
+  # "crosscheck: certified C vertices, float F; agreeing A, missing M, spurious S, moved V"
+  read -r c f a m s v < <(echo "$summary" | sed -E 's/[^0-9]+/ /g')
+  echo "| $label | $sites | ok | $c | $f | $a | $m | $s | $v | $SECONDS_TAKEN |"
+}
+
 # ---- main ------------------------------------------------------------------------------------------
 cpu=$(awk -F': *' '/^model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null || true)
 commit=$(git -C "$REPO_DIR" rev-parse --short HEAD 2>/dev/null || echo unknown)
 echo "Machine: $(nproc) CPUs, ${cpu:-unknown CPU}; date: $(date '+%Y-%m-%d %H:%M %Z')"
-echo "apollonius3d: commit $commit, certify --threads $THREADS; voronota: $(dpkg-query -W -f '${Version}' voronota 2>/dev/null || echo unknown); timeout ${TIMEOUT}s per run"
-echo
-echo "| input | sites | voronota | claimed | confirmed | missing | spurious (not a vertex) | of which name a hidden ball | wrong root | coordinates off | duplicate | degenerate surplus | voronota s | certify s |"
-echo "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+if [[ $PEER == voronota ]]; then
+  echo "apollonius3d: commit $commit, certify --threads $THREADS; voronota: $(dpkg-query -W -f '${Version}' voronota 2>/dev/null || echo unknown); timeout ${TIMEOUT}s per run"
+  echo
+  echo "| input | sites | voronota | claimed | confirmed | missing | spurious (not a vertex) | of which name a hidden ball | wrong root | coordinates off | duplicate | degenerate surplus | voronota s | certify s |"
+  echo "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+  check_input=certify_input
+else
+  echo "apollonius3d: commit $commit, crosscheck --threads $THREADS; timeout ${TIMEOUT}s per run"
+  echo
+  echo "| input | sites | crosscheck | certified vertices | float vertices | agreeing | missing | spurious | moved | seconds (both paths) |"
+  echo "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|"
+  check_input=crosscheck_input
+fi
 
 if [[ $INPUTS == none ]]; then
   INPUTS=""
@@ -146,10 +178,10 @@ for name in "${names[@]}"; do
   [[ -n $name ]] || continue
   for s in "${skipped[@]}"; do [[ $name == "$s" ]] && { log "$name: skipped (--skip)"; continue 2; }; done
   if [[ -f $name ]]; then
-    certify_input "$(basename "$name" .balls)" "$(basename "$name" .balls)" "$name"
+    $check_input "$(basename "$name" .balls)" "$(basename "$name" .balls)" "$name"
   else
     balls=$(vdrc_balls "$name") || exit 1
-    certify_input "$name" "$name" "$balls"
+    $check_input "$name" "$name" "$balls"
   fi
 done
 
@@ -163,11 +195,11 @@ if [[ $FAMILIES != none ]]; then
     IFS=, read -r -a families <<<"$FAMILIES"
     for family in "${families[@]}"; do
       if balls=$(generated_balls "$family"); then
-        certify_input "$family (n $N, seed $SEED)" "$family-n$N-s$SEED" "$balls"
+        $check_input "$family (n $N, seed $SEED)" "$family-n$N-s$SEED" "$balls"
       else
         echo "| $family (n $N, seed $SEED) | - | generate failed | - | - | - | - | - | - | - | - | - | - | - |"
       fi
     done
   fi
 fi
-log "Voronota outputs, certify summaries and reports: $WORK_DIR/out/"
+log "outputs, summaries and reports: $WORK_DIR/out/"

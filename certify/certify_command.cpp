@@ -39,13 +39,12 @@ struct Certify_command {
   std::string report;                  // empty: no report file
   bool strict = false;
   double relative_tolerance = 1e-9;
-  int threads = 1;
-  Read_options read_options;
+  Diagram_options diagram;
 };
 
 Certify_command parse_certify(const std::vector<std::string>& args) {
   Certify_command command;
-  std::vector<std::string> positional;
+  std::vector<std::string> positional_arguments;
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--format") {
@@ -57,21 +56,16 @@ Certify_command parse_certify(const std::vector<std::string>& args) {
     } else if (a == "--strict") {
       command.strict = true;
     } else if (a == "--coord-tol") {
-      command.relative_tolerance = parse_option_number(option_value(args, i), a);
-      if (command.relative_tolerance < 0) throw Usage_error("option --coord-tol needs a number >= 0");
-    } else if (a == "--threads") {
-      command.threads = parse_threads(option_value(args, i));
-    } else if (parse_read_option(a, command.read_options)) {
-      // --keep-hydrogens, --keep-waters: recorded in read_options
-    } else if (a.size() > 1 && a[0] == '-') {
-      throw Usage_error("unknown option '" + a + "'");
+      command.relative_tolerance = parse_coordinate_tolerance(option_value(args, i));
+    } else if (parse_diagram_option(args, i, command.diagram)) {
+      // --threads, --keep-hydrogens, --keep-waters: recorded in command.diagram
     } else {
-      positional.push_back(a);
+      positional_arguments.push_back(positional(a));
     }
   }
-  if (positional.size() != 2) throw Usage_error("certify needs INPUT and CLAIM");
-  command.input = positional[0];
-  command.claim = positional[1];
+  if (positional_arguments.size() != 2) throw Usage_error("certify needs INPUT and CLAIM");
+  command.input = positional_arguments[0];
+  command.claim = positional_arguments[1];
   if (command.input == "-" && command.claim == "-") throw Usage_error("INPUT and CLAIM cannot both be stdin");
   return command;
 }
@@ -81,12 +75,12 @@ Certify_command parse_certify(const std::vector<std::string>& args) {
 int run_certify(const std::vector<std::string>& args, std::ostream& err) {
   const Certify_command command = parse_certify(args);
   // Every input is read and checked before the diagram is computed, so bad input fails at once.
-  const std::vector<Site> sites = read_sites(command.input, command.read_options).sites;
+  const std::vector<Site> sites = read_sites(command.input, command.diagram.read_options).sites;
   const std::string claim_name = input_name(command.claim);
   const Claimed_vertex_list claims =
       read_claimed_vertices(read_input_file(command.claim), claim_name, command.format, sites.size());
 
-  const Diagram diagram = octree_diagram(sites, Octree_options{command.threads});
+  const Diagram diagram = octree_diagram(sites, Octree_options{command.diagram.threads});
   const Coordinate_tolerance tolerance{command.relative_tolerance, input_scale(sites)};
   const Certification certification = judge_claims(sites, diagram, claims.vertices, tolerance);
 

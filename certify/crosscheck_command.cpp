@@ -22,8 +22,7 @@ struct Crosscheck_command {
   std::string input;
   std::string output;  // empty: standard output
   double relative_tolerance = 1e-9;
-  int threads = 1;
-  Read_options read_options;
+  Diagram_options diagram;
 };
 
 Crosscheck_command parse_crosscheck(const std::vector<std::string>& args) {
@@ -33,16 +32,11 @@ Crosscheck_command parse_crosscheck(const std::vector<std::string>& args) {
     if (a == "-o" || a == "--output") {
       command.output = option_value(args, i);
     } else if (a == "--coord-tol") {
-      command.relative_tolerance = parse_option_number(option_value(args, i), a);
-      if (command.relative_tolerance < 0) throw Usage_error("option --coord-tol needs a number >= 0");
-    } else if (a == "--threads") {
-      command.threads = parse_threads(option_value(args, i));
-    } else if (parse_read_option(a, command.read_options)) {
-      // --keep-hydrogens, --keep-waters: recorded in read_options
-    } else if (a.size() > 1 && a[0] == '-') {
-      throw Usage_error("unknown option '" + a + "'");
+      command.relative_tolerance = parse_coordinate_tolerance(option_value(args, i));
+    } else if (parse_diagram_option(args, i, command.diagram)) {
+      // --threads, --keep-hydrogens, --keep-waters: recorded in command.diagram
     } else if (command.input.empty()) {
-      command.input = a;
+      command.input = positional(a);
     } else {
       throw Usage_error("unexpected argument '" + a + "'");
     }
@@ -55,9 +49,10 @@ Crosscheck_command parse_crosscheck(const std::vector<std::string>& args) {
 
 int run_crosscheck(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Crosscheck_command command = parse_crosscheck(args);
-  const std::vector<Site> sites = read_sites(command.input, command.read_options).sites;
-  const Diagram certified = octree_diagram(sites, Octree_options{command.threads});
-  const Diagram floating = octree_diagram(sites, Octree_options{command.threads, nullptr, Arithmetic::floating});
+  const std::vector<Site> sites = read_sites(command.input, command.diagram.read_options).sites;
+  const int threads = command.diagram.threads;
+  const Diagram certified = octree_diagram(sites, Octree_options{threads});
+  const Diagram floating = octree_diagram(sites, Octree_options{threads, nullptr, Arithmetic::floating});
   const Crosscheck check = crosscheck(sites, certified, floating, {command.relative_tolerance, input_scale(sites)});
   write_command_output(command.output, out, [&](std::ostream& o) { write_disagreements(o, check); });
 

@@ -45,34 +45,19 @@ Line_roots<NT> line_roots(const Quadruple_line<NT>& line) {
   return result;
 }
 
-// X_j = (Q_j + lambda n_j) / n_k with lambda = (a + b sqrt d) / den.
-inline Vertex_coordinates<Interval> coordinates_on_line(const Quadruple_line<Interval>& line,
-                                                        const Root_number<Interval>& lambda) {
-  const Interval l = (lambda.a + lambda.b * CGAL::sqrt(lambda.d)) / lambda.denominator;
-  Vertex_coordinates<Interval> V;
+// X_j = (Q_j + lambda n_j) / n_k with lambda = (a + b sqrt d) / den, for the filter stages and the floating
+// path (sqrt: CGAL's for Interval, double_with_error.h's, std::sqrt).
+template <class NT>
+Vertex_coordinates<NT> coordinates_on_line(const Quadruple_line<NT>& line, const Root_number<NT>& lambda) {
+  using std::sqrt;
+  using CGAL::sqrt;
+  const NT l = (lambda.a + lambda.b * sqrt(lambda.d)) / lambda.denominator;
+  Vertex_coordinates<NT> V;
   for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
   return V;
 }
 
-// The same in doubles with error (double_with_error.h), the first filter stage of vertices_of.
-inline Vertex_coordinates<Double_with_error> coordinates_on_line(const Quadruple_line<Double_with_error>& line,
-                                                                 const Root_number<Double_with_error>& lambda) {
-  const Double_with_error l = (lambda.a + lambda.b * sqrt(lambda.d)) / lambda.denominator;
-  Vertex_coordinates<Double_with_error> V;
-  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
-  return V;
-}
-
-// The same in plain doubles, for the floating path.
-inline Vertex_coordinates<double> coordinates_on_line(const Quadruple_line<double>& line,
-                                                      const Root_number<double>& lambda) {
-  const double l = (lambda.a + lambda.b * std::sqrt(lambda.d)) / lambda.denominator;
-  Vertex_coordinates<double> V;
-  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
-  return V;
-}
-
-// Over the common denominator den * |n_k|.
+// The exact coordinates, over the common denominator den * |n_k|.
 inline Vertex_coordinates<Exact> coordinates_on_line(const Quadruple_line<Exact>& line,
                                                      const Root_number<Exact>& lambda) {
   const Exact& nk = line.n[line.pivot];

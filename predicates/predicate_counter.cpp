@@ -16,9 +16,10 @@ struct Registry {
   std::array<std::uint64_t, kMaxCountedPredicates> finished_evaluations{}, finished_exact_stages{};
 };
 
+// Never destroyed: worker threads may end, and hand in their counts, after static destruction began.
 Registry& registry() {
-  static Registry instance;
-  return instance;
+  static Registry* const instance = new Registry;
+  return *instance;
 }
 
 }  // namespace

@@ -25,33 +25,14 @@ struct Quadruple {
 };
 
 // The coordinates X of a vertex, scaled by a positive denominator: X_j = scaled[j] / denominator.
-// Formulas are written once against this interface (sign, +, -, * by NT).
+// Formulas are written once against this interface (sign, +, -, * by NT). For the filter stages
+// (Interval, Double_with_error) and the floating path (double) the denominator is 1.
 template <class NT>
-struct Vertex_coordinates;
-
-template <>
-struct Vertex_coordinates<Interval> {
-  using Element = Interval;
-  std::array<Interval, 4> scaled;
-  Interval denominator{1};
-  Sign sign(const Interval& e) const { return certain_sign(e); }
-};
-
-template <>
-struct Vertex_coordinates<Double_with_error> {
-  using Element = Double_with_error;
-  std::array<Double_with_error, 4> scaled;
-  Double_with_error denominator{1};
-  Sign sign(const Double_with_error& e) const { return certain_sign(e); }
-};
-
-// The floating path's vertices: plain doubles, held in the vertex's (degenerate) interval box.
-template <>
-struct Vertex_coordinates<double> {
-  using Element = double;
-  std::array<double, 4> scaled;
-  double denominator = 1;
-  Sign sign(double e) const { return certain_sign(e); }
+struct Vertex_coordinates {
+  using Element = NT;
+  std::array<NT, 4> scaled;
+  NT denominator{1};
+  Sign sign(const NT& e) const { return certain_sign(e); }
 };
 
 template <>

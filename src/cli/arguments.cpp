@@ -49,6 +49,25 @@ bool parse_read_option(const std::string& argument, Read_options& options) {
   return true;
 }
 
+bool parse_diagram_option(const std::vector<std::string>& args, std::size_t& i, Diagram_options& options) {
+  if (args[i] == "--threads") {
+    options.threads = parse_threads(option_value(args, i));
+    return true;
+  }
+  return parse_read_option(args[i], options.read_options);
+}
+
+double parse_coordinate_tolerance(const std::string& text) {
+  const double tolerance = parse_option_number(text, "--coord-tol");
+  if (tolerance < 0) throw Usage_error("option --coord-tol needs a number >= 0");
+  return tolerance;
+}
+
+const std::string& positional(const std::string& argument) {
+  if (argument.size() > 1 && argument[0] == '-') throw Usage_error("unknown option '" + argument + "'");
+  return argument;
+}
+
 void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write) {
   if (path.empty()) {
     std::ostringstream buffer;

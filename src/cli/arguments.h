@@ -34,6 +34,21 @@ int parse_threads(const std::string& text);
 // Whether argument is an option of the INPUT readers (--keep-hydrogens, --keep-waters), set in options.
 bool parse_read_option(const std::string& argument, Read_options& options);
 
+// The options of every command that reads an INPUT and computes its diagram.
+struct Diagram_options {
+  int threads = 1;
+  Read_options read_options;
+};
+
+// Whether args[i] is one of them (--threads N, --keep-hydrogens, --keep-waters); advances i past it.
+bool parse_diagram_option(const std::vector<std::string>& args, std::size_t& i, Diagram_options& options);
+
+// The value of --coord-tol: a number >= 0.
+double parse_coordinate_tolerance(const std::string& text);
+
+// argument as a positional argument: a Usage_error if it looks like an option.
+const std::string& positional(const std::string& argument);
+
 // A command's output: written atomically to path, or to out when path is empty, where nothing appears
 // unless all of it is ready. A file that cannot be written is a Usage_error.
 void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write);

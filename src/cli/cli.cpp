@@ -43,9 +43,8 @@ struct Vertices_command {
   bool stats = false;
   bool brute_force = false;
   Arithmetic arithmetic = Arithmetic::certified;
-  int threads = 1;
   std::optional<Axis_box> box;
-  Read_options read_options;
+  Diagram_options diagram;
 };
 
 bool ends_with(const std::string& s, const std::string& suffix) {
@@ -73,8 +72,6 @@ Vertices_command parse_vertices(const std::vector<std::string>& args) {
       if (arithmetic != "certified" && arithmetic != "float")
         throw Usage_error("unknown arithmetic '" + arithmetic + "' (certified or float)");
       command.arithmetic = arithmetic == "float" ? Arithmetic::floating : Arithmetic::certified;
-    } else if (a == "--threads") {
-      command.threads = parse_threads(option_value(args, i));
     } else if (a == "--box") {
       if (i + 6 >= args.size()) throw Usage_error("option --box needs 6 numbers X0 Y0 Z0 X1 Y1 Z1");
       Axis_box box;
@@ -84,12 +81,10 @@ Vertices_command parse_vertices(const std::vector<std::string>& args) {
       command.box = box;
     } else if (a == "--stats") {
       command.stats = true;
-    } else if (parse_read_option(a, command.read_options)) {
-      // --keep-hydrogens, --keep-waters: recorded in read_options
-    } else if (a.size() > 1 && a[0] == '-') {
-      throw Usage_error("unknown option '" + a + "'");
+    } else if (parse_diagram_option(args, i, command.diagram)) {
+      // --threads, --keep-hydrogens, --keep-waters: recorded in command.diagram
     } else if (command.input.empty()) {
-      command.input = a;
+      command.input = positional(a);
     } else {
       throw Usage_error("unexpected argument '" + a + "'");
     }
@@ -118,12 +113,12 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
 
 int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Vertices_command command = parse_vertices(args);
-  const Site_input input = read_sites(command.input, command.read_options);
+  const Site_input input = read_sites(command.input, command.diagram.read_options);
   reset_predicate_statistics();
   Octree_statistics octree_statistics;
   Diagram diagram = command.brute_force
                         ? brute_force_diagram(input.sites)
-                        : octree_diagram(input.sites, Octree_options{command.threads, &octree_statistics, command.arithmetic});
+                        : octree_diagram(input.sites, Octree_options{command.diagram.threads, &octree_statistics, command.arithmetic});
   if (command.box) restrict_to_box(diagram, *command.box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
 
