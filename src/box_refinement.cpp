@@ -18,8 +18,12 @@ constexpr std::size_t kWitnesses = 3;
 // Refining stops helping when the candidate count has not dropped for kStagnationLevels levels and the box
 // is tiny against its distance to every candidate centre (kTinyBox half-diagonals): refining cannot
 // separate candidates that tie at a point (a degenerate vertex) or along a curve. Boxes near site centres
-// are never settled this way. kMaxDepth bounds the depth for inputs near the double range.
+// are never settled this way, nor boxes of more than kStagnantCandidates: nearly cospherical sites
+// (vdrc Ext_I_Congruent_300: 300 of them) have many distinct vertices close together, which refining
+// separates, where enumerating their quadruples would not end. kMaxDepth bounds the depth for inputs near
+// the double range.
 constexpr int kStagnationLevels = 4;
+constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 400;
 
@@ -88,7 +92,8 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
   if (kept >= 4) {
     stagnant = kept == end - first ? stagnant + 1 : 0;
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
-                         (stagnant >= kStagnationLevels && tiny_against_candidates(box, end));
+                         (stagnant >= kStagnationLevels && kept <= kStagnantCandidates &&
+                          tiny_against_candidates(box, end));
     const Children children = settled ? Children{} : split(box);
     if (children.count == 0)
       decide_leaf(box, end, out);
@@ -158,7 +163,14 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
       for (std::size_t c = b + 1; c < k; ++c)
         for (std::size_t d = c + 1; d < k; ++d) {
           const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
-          for (const Vertex& v : cache_.vertices_of_quadruple(quadruple, sites_).vertices) {
+          // A leaf of many candidates (an exact tie of many sites, at the double resolution) is streamed:
+          // caching its quadruples would hold them all.
+          const Quadruple_vertices streamed = k > kStagnantCandidates
+                                                  ? Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_))
+                                                  : Quadruple_vertices{};
+          const Quadruple_vertices& vertices =
+              k > kStagnantCandidates ? streamed : cache_.vertices_of_quadruple(quadruple, sites_);
+          for (const Vertex& v : vertices.vertices) {
             if (!Kernel::in_box(v, box, closed_above)) continue;
             // The candidates include every owner of the vertex: its tie set is among them.
             tie_.assign(quadruple.begin(), quadruple.end());

@@ -1,5 +1,5 @@
-// Inputs that fuzz_vertices (tests/fuzz) found, kept in tests/data/regression and run through the
-// normal build: the octree must give the brute force's diagram on each.
+// Inputs that found defects of the octree (most by fuzz_vertices, tests/fuzz), kept in tests/data/regression
+// and run through the normal build: the octree must give the brute force's diagram on each.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -44,4 +44,15 @@ TEST_CASE("regression: octree_far_field_slow_for_far_vertices") {
 // The octree's root box would exceed the double range; scaled down by 2^1023 it does not.
 TEST_CASE("regression: octree_root_box_beyond_double_range") {
   check_octree_equals_brute_force("octree_root_box_beyond_double_range.balls");
+}
+
+// Too large for the brute force (C(300, 4) quadruples): every vertex is validated exactly against every
+// site, and Voronota finds the same 870 (bench/README.md, certify on Ext_I_Congruent_300).
+TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {
+  const std::vector<Site> sites =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/octree_stagnation_enumerated_300_cospherical_sites.balls", {})
+          .sites;
+  const Diagram octree = octree_diagram(sites);
+  validate_diagram(octree, sites);
+  CHECK(octree.vertices.size() == 870);
 }

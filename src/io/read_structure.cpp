@@ -13,6 +13,7 @@
 #include <gemmi/mmread.hpp>
 
 #include "io/input_error.h"
+#include "io/text_input.h"
 
 namespace apollonius {
 
@@ -127,27 +128,56 @@ bool starts_with_record(std::string_view line, std::string_view record) {
   return true;
 }
 
+// gemmi reads an atom coordinate (columns 31-38, 39-46, 47-54) as the longest number the field starts
+// with, and a blank one as 0: "2,4 0.00" would be 2. Bad input, reported at its line.
+void check_atom_coordinates(std::string_view line, const std::string& name, std::size_t number) {
+  if (!starts_with_record(line, "ATOM") && !starts_with_record(line, "HETA")) return;
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.remove_suffix(1);
+  if (line.size() < 54) return;  // gemmi's "too short" error
+  for (const std::size_t column : {30, 38, 46}) {
+    std::string_view field = line.substr(column, 8);
+    field.remove_prefix(std::min(field.find_first_not_of(' '), field.size()));
+    field.remove_suffix(field.size() - (field.find_last_not_of(' ') + 1));
+    const std::string columns = "columns " + std::to_string(column + 1) + "-" + std::to_string(column + 8);
+    if (field.empty()) throw Input_error(name, number, "blank atom coordinate in " + columns);
+    try {
+      parse_number(field, name, number);
+    } catch (const Input_error& e) {
+      throw Input_error(name, number, "atom coordinate in " + columns + ": " + e.reason());
+    }
+  }
+}
+
 // gemmi 0.5.7 reads the distance of an SSBOND or LINK record (columns 74-78) from any such line longer
 // than 73 bytes, and so reads past the end of a line of 74 to 77 (regression/gemmi_ssbond_overread.pdb).
 // gemmi collects these records and CISPEP only for bonds, which no radius needs: they are blanked here,
 // their line breaks kept so that gemmi's line numbers stay right.
-std::string without_connection_records(std::string_view pdb) {
+// gemmi skips the rest of a line longer than it reads only up to a byte above 0x7f (its getc returns a
+// signed char), and starts its next line there: such a "line" may be a short SSBOND record
+// (regression/gemmi_line_split_at_high_byte.pdb). PDB is ASCII; such bytes can only stand in names or
+// remarks, and become '?', so that gemmi splits lines where this function does. (NUL, which stops
+// gemmi's skip too, is refused before: no text holds it.)
+std::string gemmi_safe_pdb_text(std::string_view pdb, const std::string& name) {
   std::string kept;
   kept.reserve(pdb.size());
-  for (std::size_t start = 0; start < pdb.size();) {
+  std::size_t number = 1;
+  for (std::size_t start = 0; start < pdb.size(); ++number) {
     const std::size_t end = std::min(pdb.find('\n', start), pdb.size() - 1) + 1;  // past the line break
     const std::string_view line = pdb.substr(start, end - start);
-    if (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK") || starts_with_record(line, "CISP"))
+    check_atom_coordinates(line, name, number);
+    if (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK") || starts_with_record(line, "CISP")) {
       kept += line.back() == '\n' ? "\n" : "";
-    else
-      kept += line;
+    } else {
+      for (const char c : line) kept += static_cast<unsigned char>(c) > 0x7f ? '?' : c;
+    }
     start = end;
   }
   return kept;
 }
 
 gemmi::Structure parse_pdb(std::string_view pdb, const std::string& name) {
-  const std::string text = without_connection_records(pdb);
+  reject_binary_data(pdb, name);
+  const std::string text = gemmi_safe_pdb_text(pdb, name);
   return gemmi::read_pdb_from_memory(text.data(), text.size(), name, pdb_read_options());
 }
 
@@ -175,6 +205,8 @@ std::vector<Site> read_structure(const std::string& path_or_name, const std::str
   gemmi::Structure structure;
   try {
     structure = parse_structure(path_or_name, content);
+  } catch (const Input_error&) {
+    throw;
   } catch (const std::runtime_error& e) {
     throw input_error_from_gemmi(path_or_name, e.what());
   } catch (const std::logic_error& e) {

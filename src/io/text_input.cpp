@@ -65,7 +65,7 @@ std::string read_input_file(const std::string& path) {
   return content;
 }
 
-void reject_binary_data(const std::string& content, const std::string& name) {
+void reject_binary_data(std::string_view content, const std::string& name) {
   std::size_t line = 1;
   for (const char c : content) {
     const auto byte = static_cast<unsigned char>(c);

@@ -23,7 +23,7 @@ void check_readable(const std::string& path);
 std::string read_input_file(const std::string& path);
 
 // Text may hold tabs, line and page breaks; any other control byte means this is no text file.
-void reject_binary_data(const std::string& content, const std::string& name);
+void reject_binary_data(std::string_view content, const std::string& name);
 
 // Invariant: text holds neither the line break nor a '\r' before it; number is 1-based.
 struct Text_line {
