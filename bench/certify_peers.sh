@@ -27,7 +27,7 @@ usage() {
 Usage: $0 [options]
   --inputs LIST     comma-separated vdrc set names or balls files, or 'none' (default: every set
                     in \$BENCH_DATA_DIR/vdrc)
-  --skip LIST       vdrc sets left out, e.g. Ext_I_Congruent_300 (5 minutes of certify; default: none)
+  --skip LIST       vdrc sets left out, e.g. BALL_SMALL_10000 (default: none)
   --families LIST   generator families, 'all' or 'none' (default: $FAMILIES); they need
                     'apollonius3d generate KIND --n N --seed S' (balls text on stdout) and are
                     left out, with a note, when the binary has no generate command
