@@ -33,12 +33,8 @@ Crosscheck_command parse_crosscheck(const std::vector<std::string>& args) {
       command.output = option_value(args, i);
     } else if (a == "--coord-tol") {
       command.relative_tolerance = parse_coordinate_tolerance(option_value(args, i));
-    } else if (parse_diagram_option(args, i, command.diagram)) {
-      // --threads, --keep-hydrogens, --keep-waters: recorded in command.diagram
-    } else if (command.input.empty()) {
-      command.input = positional(a);
     } else {
-      throw Usage_error("unexpected argument '" + a + "'");
+      parse_diagram_option_or_input(args, i, command.diagram, command.input);
     }
   }
   if (command.input.empty()) throw Usage_error("missing INPUT");

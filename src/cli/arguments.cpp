@@ -57,6 +57,13 @@ bool parse_diagram_option(const std::vector<std::string>& args, std::size_t& i, 
   return parse_read_option(args[i], options.read_options);
 }
 
+void parse_diagram_option_or_input(const std::vector<std::string>& args, std::size_t& i, Diagram_options& options,
+                                   std::string& input) {
+  if (parse_diagram_option(args, i, options)) return;
+  if (!input.empty()) throw Usage_error("unexpected argument '" + args[i] + "'");
+  input = positional(args[i]);
+}
+
 double parse_coordinate_tolerance(const std::string& text) {
   const double tolerance = parse_option_number(text, "--coord-tol");
   if (tolerance < 0) throw Usage_error("option --coord-tol needs a number >= 0");

@@ -43,6 +43,11 @@ struct Diagram_options {
 // Whether args[i] is one of them (--threads N, --keep-hydrogens, --keep-waters); advances i past it.
 bool parse_diagram_option(const std::vector<std::string>& args, std::size_t& i, Diagram_options& options);
 
+// args[i] as one of the diagram options or as the single positional INPUT (stored in input); anything
+// else is a Usage_error. For commands whose only positional argument is INPUT.
+void parse_diagram_option_or_input(const std::vector<std::string>& args, std::size_t& i, Diagram_options& options,
+                                   std::string& input);
+
 // The value of --coord-tol: a number >= 0.
 double parse_coordinate_tolerance(const std::string& text);
 

@@ -81,12 +81,8 @@ Vertices_command parse_vertices(const std::vector<std::string>& args) {
       command.box = box;
     } else if (a == "--stats") {
       command.stats = true;
-    } else if (parse_diagram_option(args, i, command.diagram)) {
-      // --threads, --keep-hydrogens, --keep-waters: recorded in command.diagram
-    } else if (command.input.empty()) {
-      command.input = positional(a);
     } else {
-      throw Usage_error("unexpected argument '" + a + "'");
+      parse_diagram_option_or_input(args, i, command.diagram, command.input);
     }
   }
   if (command.input.empty()) throw Usage_error("missing INPUT");
