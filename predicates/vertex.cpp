@@ -61,8 +61,11 @@ std::array<Root_number<Exact>, 4> exact_point(const Vertex& v) {
 
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X) { return Vertex(q, root, X.scaled); }
 
+// The floating path's point, as a point interval. A coordinate that overflowed stays infinite (or NaN):
+// the two-bound constructor admits both, where Interval(double) asserts a finite value.
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<double> X) {
-  return Vertex(q, root, {Interval(X.scaled[0]), Interval(X.scaled[1]), Interval(X.scaled[2]), Interval(X.scaled[3])});
+  const auto point = [](double x) { return Interval(x, x); };
+  return Vertex(q, root, {point(X.scaled[0]), point(X.scaled[1]), point(X.scaled[2]), point(X.scaled[3])});
 }
 
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with_error> X) {

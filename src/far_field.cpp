@@ -39,14 +39,28 @@ struct Offset {
 };
 
 // The certified far field rounds its intervals outwards; the floating path (kernels.h) evaluates the same
-// formulas in round-to-nearest, as plain doubles would.
+// formulas in round-to-nearest, as plain doubles would, and restores the caller's rounding mode.
 template <class Kernel>
 struct Far_field_rounding {
-  std::optional<Rounding_guard> guard;
+  std::optional<Rounding_guard> outwards;
+  std::optional<CGAL::Protect_FPU_rounding<true>> to_nearest;
   Far_field_rounding() {
-    if constexpr (Kernel::rounds_outwards) guard.emplace();
+    if constexpr (Kernel::rounds_outwards)
+      outwards.emplace();
+    else
+      to_nearest.emplace(CGAL_FE_TONEAREST);
   }
 };
+
+// CGAL's interval square root switches the rounding mode to downward and back to upward, which is right
+// only under the certified guard: the floating path takes the square roots of its bounds, to nearest.
+template <class Kernel>
+Interval interval_sqrt(const Interval& x) {
+  if constexpr (Kernel::rounds_outwards)
+    return CGAL::sqrt(x);
+  else
+    return Interval(std::sqrt(std::max(x.inf(), 0.0)), std::sqrt(x.sup()));
+}
 
 template <class Kernel>
 class Far_field {
@@ -60,7 +74,7 @@ class Far_field {
       o.a = {Interval(sites[i].x) - Interval(origin[0]), Interval(sites[i].y) - Interval(origin[1]),
              Interval(sites[i].z) - Interval(origin[2])};
       o.norm_squared = CGAL::square(o.a[0]) + CGAL::square(o.a[1]) + CGAL::square(o.a[2]);
-      o.norm = CGAL::sqrt(o.norm_squared);
+      o.norm = interval_sqrt<Kernel>(o.norm_squared);
     }
   }
 
@@ -71,7 +85,7 @@ class Far_field {
       // u.a + w over the directions of the patch: y = (side, s, t) in face coordinates, u = y / |y|.
       const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
       const Interval S(p.s0, p.s1), T(p.t0, p.t1);
-      const Interval norm = CGAL::sqrt(Interval(1) + CGAL::square(S) + CGAL::square(T));
+      const Interval norm = interval_sqrt<Kernel>(Interval(1) + CGAL::square(S) + CGAL::square(T));
       // Over the patch, u.a for an offset a; the witness is the site whose support u.a + w is largest at
       // the patch's middle direction. Margins are taken on differences, u.(a_j - a_k) + w_j - w_k, whose
       // interval is as wide as |a_j - a_k| times the patch, not |a_j| + |a_k|.
