@@ -135,8 +135,9 @@ class Far_field {
 
  private:
   // Whether a site beaten by margin m owns no point of the cone beyond the root box's inscribed ball:
-  // |a_j| + q_j / (2 m) <= radius, for the witness j.
+  // |a_j| + q_j / (2 m) <= radius, for the witness j. A spread that overflowed bounds nothing: the site stays.
   bool leaves_within_radius(const Offset& witness, double witness_spread, double margin) const {
+    if (!std::isfinite(witness_spread)) return false;
     return (witness.norm + Interval(witness_spread) / (Interval(2) * Interval(margin))).sup() <= radius_;
   }
 

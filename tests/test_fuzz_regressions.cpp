@@ -46,6 +46,14 @@ TEST_CASE("regression: octree_root_box_beyond_double_range") {
   check_octree_equals_brute_force("octree_root_box_beyond_double_range.balls");
 }
 
+// fuzz_vertices, with CGAL's assertions on: sites 1e207 (or 5e289) and 1e-323 apart made the far field's
+// bound q_j overflow to inf, and Interval(inf) breaks Interval_nt's precondition. Such a bound now removes
+// nothing.
+TEST_CASE("regression: far_field_spread_overflow") {
+  check_octree_equals_brute_force("far_field_spread_overflow_at_1e207.balls");
+  check_octree_equals_brute_force("far_field_spread_overflow_at_5e289.balls");
+}
+
 // Too large for the brute force (C(300, 4) quadruples): every vertex is validated exactly against every
 // site, and Voronota finds the same 870 (bench/README.md, certify on Ext_I_Congruent_300).
 TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {
