@@ -7,9 +7,7 @@
 //    and to measure what exactness costs; it is never the default.
 #pragma once
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 
 #include "axis_box.h"
 #include "compare_vertices.h"
@@ -46,17 +44,7 @@ struct Floating_kernel {
   static constexpr double filter_slack = 0;
   static constexpr bool rounds_outwards = false;
 
-  // A root whose doubles became NaN is no point: the floating path loses it (certain_sign would read its
-  // NaN comparisons as ties).
-  static Quadruple_vertices vertices_of_quadruple(const Quadruple& q) {
-    Quadruple_vertices found = vertices_of.floating(q);
-    const auto not_a_point = [](const Vertex& v) {
-      const Vertex_coordinates<double> X = coordinates_for<double>(v);
-      return std::any_of(X.scaled.begin(), X.scaled.end(), [](double x) { return std::isnan(x); });
-    };
-    found.vertices.erase(std::remove_if(found.vertices.begin(), found.vertices.end(), not_a_point), found.vertices.end());
-    return found;
-  }
+  static Quadruple_vertices vertices_of_quadruple(const Quadruple& q) { return vertices_of.floating(q); }
   static bool in_box(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
     return vertex_in_box.floating(v, box, closed_above);
   }

@@ -4,7 +4,10 @@
 #pragma once
 
 #include <boost/container/static_vector.hpp>
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "filtered_predicate.h"
@@ -19,9 +22,12 @@ struct Quadruple_vertices {
   boost::container::static_vector<Vertex, 2> vertices;  // a quadratic has at most two roots
 };
 
-// X gives r + w_m >= 0 for m = 0..3: X_3 + 2 b_m >= 0 with b_0 = 0.
+// X gives r + w_m >= 0 for m = 0..3: X_3 + 2 b_m >= 0 with b_0 = 0. The floating path's doubles can
+// become NaN, which its signs would read as ties: such a root is no point.
 template <class NT>
 bool is_valid_root(const Vertex_coordinates<NT>& X, const Quadruple& q) {
+  if constexpr (std::is_same_v<NT, double>)
+    if (std::any_of(X.scaled.begin(), X.scaled.end(), [](double x) { return std::isnan(x); })) return false;
   if (X.sign(X.scaled[3]) == Sign::NEGATIVE) return false;
   for (int m = 1; m < 4; ++m) {
     const NT twice_b = NT(2) * (NT(q.sites[m].w) - NT(q.sites[0].w));

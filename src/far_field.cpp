@@ -1,15 +1,14 @@
 #include "far_field.h"
 
+#include <CGAL/FPU.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include "kernels.h"
 #include "leaf_decision.h"
-#include "rounding_guard.h"
 
 namespace apollonius {
 namespace {
@@ -39,17 +38,10 @@ struct Offset {
 };
 
 // The certified far field rounds its intervals outwards; the floating path (kernels.h) evaluates the same
-// formulas in round-to-nearest, as plain doubles would, and restores the caller's rounding mode.
+// formulas in round-to-nearest, as plain doubles would. Either way the caller's mode comes back.
 template <class Kernel>
 struct Far_field_rounding {
-  std::optional<Rounding_guard> outwards;
-  std::optional<CGAL::Protect_FPU_rounding<true>> to_nearest;
-  Far_field_rounding() {
-    if constexpr (Kernel::rounds_outwards)
-      outwards.emplace();
-    else
-      to_nearest.emplace(CGAL_FE_TONEAREST);
-  }
+  CGAL::Protect_FPU_rounding<true> protect{Kernel::rounds_outwards ? CGAL_FE_UPWARD : CGAL_FE_TONEAREST};
 };
 
 // CGAL's interval square root switches the rounding mode to downward and back to upward, which is right

@@ -27,12 +27,12 @@ const Quadruple_vertices& Quadruple_cache<Kernel>::vertices_of_quadruple(const s
   const std::uint64_t low = low_word(sorted), high = high_word(sorted);
   std::size_t slot = slot_of(low, high);
   for (; slots_[slot].entry != 0; slot = (slot + 1) & (slots_.size() - 1))
-    if (slots_[slot].low == low && slots_[slot].high == high) return entries_[slots_[slot].entry - 1].second;
+    if (slots_[slot].low == low && slots_[slot].high == high) return entries_[slots_[slot].entry - 1];
   ++misses_;
-  entries_.emplace_back(sorted, Kernel::vertices_of_quadruple(make_quadruple(sorted, sites)));
+  entries_.push_back(Kernel::vertices_of_quadruple(make_quadruple(sorted, sites)));
   slots_[slot] = {low, high, static_cast<std::uint32_t>(entries_.size())};
   if (2 * entries_.size() > slots_.size()) grow();
-  return entries_.back().second;
+  return entries_.back();
 }
 
 template <class Kernel>

@@ -22,7 +22,6 @@ class Quadruple_cache {
   // Empties the cache once it holds more than `entries` quadruples.
   void limit(std::size_t entries);
 
-  std::size_t size() const { return entries_.size(); }
   std::size_t lookups() const { return lookups_; }
   std::size_t misses() const { return misses_; }
 
@@ -37,7 +36,7 @@ class Quadruple_cache {
   std::size_t slot_of(std::uint64_t low, std::uint64_t high) const;
 
   std::vector<Slot> slots_ = std::vector<Slot>(64);
-  std::vector<std::pair<std::array<Site_index, 4>, Quadruple_vertices>> entries_;
+  std::vector<Quadruple_vertices> entries_;  // in insertion order; their keys are in the slots
   std::size_t lookups_ = 0, misses_ = 0;
 };
 
