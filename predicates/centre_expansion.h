@@ -12,10 +12,21 @@
 //      where L = min(2, 2D / (rho_i + rho_j)) bounds |grad f| (Dunkl-Williams; D = |x_i - x_j|, rho_k the
 //      distance from x_k to the box) and kappa = D / (rho_i rho_j) + 2D / (rho_j (rho_i + rho_j)) bounds
 //      the norm of Hess d_i - Hess d_j: both sites far from the box, their curvatures nearly cancel.
+//      f(c) and g are computed from x_j - x_i, not as differences of two large distances or gradients,
+//      so that (B) still separates two sites seen from a box a million million times farther away than
+//      they are apart (ERROR_BOUNDS.md, "Centre expansion", item 4):
+//          |c - x_i| - |c - x_j| = (x_j - x_i).((c - x_i) + (c - x_j)) / (|c - x_i| + |c - x_j|) =: q,
+//          u_i - u_j = ((x_j - x_i) - u_j q) / |c - x_i| = ((x_j - x_i) - u_i q) / |c - x_j|.
 //
 // Both are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
 // only ever certify; a site they cannot remove stays a candidate. The `slack` argument multiplies those
 // bounds: 1 on the certified path, 0 on the floating path (kernels.h).
+//
+// Units. Both tests are homogeneous of degree 1 in lengths, so they are evaluated in box units (lengths
+// times a power of two that brings the box to size about 1), and (B)'s differences in pair units (times a
+// power of two that brings x_j - x_i to size about 1). The squares then stay in the double range for any
+// box and any pair of sites within 2^480 box sizes of it: sites 10^160 apart, or at 10^-300, are separated
+// as well as sites 1 apart at 1.
 #pragma once
 
 #include <array>
@@ -26,12 +37,14 @@
 
 namespace apollonius {
 
-// The box seen from its centre. Invariant: when usable, every point x of the box has |x_a - c_a| <=
-// half_extent[a] and |x - c| <= reach; corner_offset[s][a] is y_a - c_a for the lower (s = 0) or upper
-// (s = 1) bound of axis a.
+// The box seen from its centre, in box units: a length L is L * unit. Invariant: when usable, every point x
+// of the box has |x_a - c_a| unit <= half_extent[a] and |x - c| unit <= reach; corner_offset[s][a] is
+// (y_a - c_a) unit for the lower (s = 0) or upper (s = 1) bound of axis a.
 struct Box_frame {
   Axis_box box;
-  std::array<double, 3> centre;
+  std::array<double, 3> centre;  // in the input's units
+  int exponent;                  // unit = 2^-exponent; the longest half-extent is about 2^exponent, |exponent| <= 1000
+  double unit;
   std::array<double, 3> half_extent;
   std::array<std::array<double, 3>, 2> corner_offset;
   double reach, reach_squared;
@@ -40,8 +53,9 @@ struct Box_frame {
 
 Box_frame frame_of(const Axis_box& box);
 
-// d_s near the box centre, as computed in doubles (each value within the bounds of ERROR_BOUNDS.md).
+// d_s near the box centre in box units, as computed in doubles (within the bounds of ERROR_BOUNDS.md).
 struct Centre_expansion {
+  std::array<double, 3> offset;    // c - x_s
   double distance;                 // |c - x_s|
   double weighted;                 // |c - x_s| - w_s = d_s(c)
   std::array<double, 3> gradient;  // (c - x_s) / |c - x_s|, or 0 when c = x_s (a subgradient)
@@ -68,12 +82,15 @@ inline bool in_error_bound_range(double sum_of_squares) {
 // Inline: the refinement expands every candidate of every box.
 inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) {
   Centre_expansion e;
-  const double offset[3] = {frame.centre[0] - s.x, frame.centre[1] - s.y, frame.centre[2] - s.z};
+  e.offset = {(frame.centre[0] - s.x) * frame.unit, (frame.centre[1] - s.y) * frame.unit,
+              (frame.centre[2] - s.z) * frame.unit};
+  const std::array<double, 3>& offset = e.offset;
   const double squared = offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2];
-  e.usable = frame.usable && in_error_bound_range(squared) && std::fabs(s.w) <= kHugeWeight;
+  const double weight = s.w * frame.unit;
+  e.usable = frame.usable && in_error_bound_range(squared) && std::fabs(weight) <= kHugeWeight;
   e.distance = std::sqrt(squared);
-  e.weighted = e.distance - s.w;
-  e.magnitude = e.distance + std::fabs(s.w);
+  e.weighted = e.distance - weight;
+  e.magnitude = e.distance + std::fabs(weight);
   const double inverse = e.distance > 0 ? 1 / e.distance : 0;
   for (int a = 0; a < 3; ++a) e.gradient[a] = offset[a] * inverse;
   return e;
@@ -82,7 +99,7 @@ inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) 
 Witness_expansion expand_witness(const Site& s, const Box_frame& frame);
 void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
 
-// The computed distance from x_s to the box of `frame` (rho_s), or -1 out of range.
+// The computed distance from x_s to the box of `frame` (rho_s, box units), or -1 out of range.
 double distance_to_box(const Site& s, const Box_frame& frame);
 
 // Test (A). The margin covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
@@ -101,22 +118,42 @@ inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansi
   return true;
 }
 
-// Test (B), given linear = sum_a |g_a| h_a; rho_i is distance_to_box(i, frame).
+// d_i(c) - d_j(c) from x_j - x_i as in (B), in pair units: the witnesses' order at the centre when the plain
+// difference of the two values is within its rounding error. Not certified: it only chooses witnesses.
+double centre_difference(const Site& i, const Centre_expansion& at_i, const Site& j, const Centre_expansion& at_j);
+
+// Whether s is nearer than t at the centre, for choosing witnesses (a wrong choice costs boxes, never a
+// vertex). 8u (magnitude_s + magnitude_t) bounds the error of the plain difference (ERROR_BOUNDS.md).
+inline bool nearer_at_centre(const Site& s, const Centre_expansion& at_s, const Site& t, const Centre_expansion& at_t) {
+  constexpr double kUnit = 0x1p-53;
+  const double difference = at_s.weighted - at_t.weighted;
+  if (std::fabs(difference) > 8 * kUnit * (at_s.magnitude + at_t.magnitude)) return difference < 0;
+  return centre_difference(s, at_s, t, at_t) < 0;
+}
+
+// Test (B); rho_i is distance_to_box(i, frame).
 bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
-                   double rho_i, const Box_frame& frame, double linear, double slack);
+                   double rho_i, const Box_frame& frame, double slack);
 
 // True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
 // at_j.has_corners. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
 inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
                                 const Centre_expansion& at_i, const Box_frame& frame, double& rho_i, double slack) {
-  if (!at_i.usable || !at_j.usable || !(at_i.weighted > at_j.weighted)) return false;
-  if (corners_dominate(at_j, at_i, frame, slack)) return true;
-  // Both bounds of (B) are at least sum_a |g_a| h_a.
+  constexpr double kUnit = 0x1p-53;
+  if (!at_i.usable || !at_j.usable) return false;
+  const double gap = at_i.weighted - at_j.weighted;
+  // 8u (magnitude_i + magnitude_j) bounds the error of gap (ERROR_BOUNDS.md item 2): below it, i is
+  // certainly closer at the centre, so not dominated.
+  if (!(gap > -slack * 8 * kUnit * (at_i.magnitude + at_j.magnitude))) return false;
+  if (gap > 0 && corners_dominate(at_j, at_i, frame, slack)) return true;
+  // (B) needs f(c) > sum_a |g_a| h_a. Rejected here only when the plain doubles show that certainly fails
+  // (ERROR_BOUNDS.md, "Centre expansion", item 5); far from both sites they cannot, and (B) decides.
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
-  if (!(at_i.weighted - at_j.weighted > linear)) return false;
+  if (!(gap - linear > -slack * 16 * kUnit * (at_i.magnitude + at_j.magnitude + 2 * frame.reach + linear)))
+    return false;
   if (rho_i < 0) rho_i = distance_to_box(i, frame);
-  return far_dominates(j, at_j, i, at_i, rho_i, frame, linear, slack);
+  return far_dominates(j, at_j, i, at_i, rho_i, frame, slack);
 }
 
 }  // namespace apollonius

@@ -20,12 +20,13 @@ constexpr std::size_t kWitnesses = 3;
 // separate candidates that tie at a point (a degenerate vertex) or along a curve. Boxes near site centres
 // are never settled this way, nor boxes of more than kStagnantCandidates: nearly cospherical sites
 // (vdrc Ext_I_Congruent_300: 300 of them) have many distinct vertices close together, which refining
-// separates, where enumerating their quadruples would not end. kMaxDepth bounds the depth for inputs near
-// the double range.
+// separates, where enumerating their quadruples would not end. kMaxDepth only bounds the recursion: the
+// doubles span 2098 binades, so split() fails first, and a seed box 2^900 times larger than a cluster of
+// sites inside it (sites spread over many orders of magnitude) still refines down to the cluster.
 constexpr int kStagnationLevels = 4;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
-constexpr int kMaxDepth = 400;
+constexpr int kMaxDepth = 2200;
 
 // The children of a box: its axes at least half as long as the longest are halved. None if some such axis
 // has no double strictly inside it.
@@ -114,11 +115,13 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
   // the centre can dominate a site on the box.
   std::array<std::size_t, kWitnesses> witness;
   std::size_t witnesses = 0;
+  const auto nearer = [&](std::size_t k, std::size_t l) {
+    return nearer_at_centre(sites_[stack_[first + k]], expansion_[k], sites_[stack_[first + l]], expansion_[l]);
+  };
   for (std::size_t k = 0; k < count; ++k) {
     if (!expansion_[k].usable) continue;
-    const double d = expansion_[k].weighted;
     std::size_t at = std::min(witnesses, kWitnesses);
-    for (; at > 0 && expansion_[witness[at - 1]].weighted > d; --at)
+    for (; at > 0 && nearer(k, witness[at - 1]); --at)
       if (at < kWitnesses) witness[at] = witness[at - 1];
     if (at < kWitnesses) witness[at] = k, witnesses = std::min(witnesses + 1, kWitnesses);
   }
@@ -129,7 +132,8 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
     const Site& s = sites_[stack_[first + k]];
     bool dominated = false;
     double rho = -1;  // computed by the second stage, once
-    for (std::size_t w = 0; w < witnesses && !dominated && at_witness[w].weighted < expansion_[k].weighted; ++w) {
+    // The witnesses before k in that order.
+    for (std::size_t w = 0; w < witnesses && !dominated && witness[w] != k; ++w) {
       const Site& j = sites_[stack_[first + witness[w]]];
       if (!at_witness[w].has_corners) add_corners(at_witness[w], j, frame);  // only witnesses that get used
       dominated = expansion_dominates(j, at_witness[w], s, expansion_[k], frame, rho, Kernel::filter_slack);
