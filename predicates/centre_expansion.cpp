@@ -9,7 +9,6 @@
 namespace apollonius {
 namespace {
 
-constexpr double kUnit = 0x1p-53;  // unit roundoff of round-to-nearest doubles
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Units are 2^-k for |k| <= kLargestUnitExponent, so that 2^-k and 2^k are normal numbers. Built from the
@@ -51,10 +50,10 @@ Box_frame frame_of(const Axis_box& box) {
     frame.corner_offset[0][a] = (box.lo[a] - frame.centre[a]) * frame.unit;
     frame.corner_offset[1][a] = (box.hi[a] - frame.centre[a]) * frame.unit;
     // One subtraction each way; 1 + 4u covers its rounding (ERROR_BOUNDS.md, "Centre expansion", item 1).
-    frame.half_extent[a] = extent[a] * frame.unit * (1 + 4 * kUnit);
+    frame.half_extent[a] = extent[a] * frame.unit * (1 + 4 * kUnitRoundoff);
     squares += frame.half_extent[a] * frame.half_extent[a];
   }
-  frame.reach = std::sqrt(squares) * (1 + 8 * kUnit);
+  frame.reach = std::sqrt(squares) * (1 + 8 * kUnitRoundoff);
   frame.reach_squared = frame.reach * frame.reach;
   frame.usable = squares >= kTinySquare && squares <= kHugeSquare;
   return frame;
@@ -102,7 +101,6 @@ namespace {
 struct Pair_at_centre {
   int exponent;                     // the largest |p_a| lies in [1, 2) (unless |exponent| = 1000)
   std::array<double, 3> towards_j;  // p
-  double separation;                // |p|
   double weight_difference;         // (w_i - w_j) 2^-exponent
   double distance_difference;       // (|c - x_i| - |c - x_j|) 2^-exponent
   bool usable;
@@ -118,7 +116,6 @@ Pair_at_centre pair_at_centre(const Site& i, const Centre_expansion& at_i, const
   const double unit = power_of_two(-pair.exponent);
   std::array<double, 3>& p = pair.towards_j;
   for (int a = 0; a < 3; ++a) p[a] = difference[a] * unit;
-  pair.separation = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
   pair.weight_difference = (i.w - j.w) * unit;
   double dot = 0;
   for (int a = 0; a < 3; ++a) dot += p[a] * (at_i.offset[a] + at_j.offset[a]);
@@ -148,7 +145,8 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
     linear += std::fabs((pair.towards_j[a] - u[a] * pair.distance_difference) * inverse) * frame.half_extent[a];
   if (!(gap > linear)) return false;
 
-  const double separation = pair.separation;
+  const std::array<double, 3>& p = pair.towards_j;
+  const double separation = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);  // |p|
   const double rho_j = at_j.distance_to_box;
   const double rho_sum = rho_i + rho_j;
   const double curvature =
@@ -162,7 +160,7 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
   // The slack covers the rounding errors of f(c) and of the bound (ERROR_BOUNDS.md, "Centre expansion").
   const double error_scale =
       bound + separation + std::fabs(pair.weight_difference) + gap + 2 * separation * frame.reach * inverse;
-  return bound + slack * 64 * kUnit * error_scale < gap;
+  return bound + slack * 64 * kUnitRoundoff * error_scale < gap;
 }
 
 }  // namespace apollonius

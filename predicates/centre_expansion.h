@@ -75,6 +75,7 @@ struct Witness_expansion : Centre_expansion {
 // Sums of squares inside [kTinySquare, kHugeSquare] (or exactly 0) keep the relative error bounds of
 // ERROR_BOUNDS.md: underflowed terms are then negligible and nothing overflows.
 constexpr double kTinySquare = 0x1p-960, kHugeSquare = 0x1p960, kHugeWeight = 0x1p480;
+constexpr double kUnitRoundoff = 0x1p-53;  // u, of round-to-nearest doubles
 inline bool in_error_bound_range(double sum_of_squares) {
   return sum_of_squares == 0 || (sum_of_squares >= kTinySquare && sum_of_squares <= kHugeSquare);
 }
@@ -105,9 +106,8 @@ double distance_to_box(const Site& s, const Box_frame& frame);
 // Test (A). The margin covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
 inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
                              double slack) {
-  constexpr double kUnit = 0x1p-53;
   if (!at_i.usable || !at_j.usable) return false;
-  const double margin = slack * 32 * kUnit * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
+  const double margin = slack * 32 * kUnitRoundoff * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
   double term[2][3];
   for (int a = 0; a < 3; ++a)
     for (int side = 0; side < 2; ++side) term[side][a] = at_i.gradient[a] * frame.corner_offset[side][a];
@@ -125,9 +125,8 @@ double centre_difference(const Site& i, const Centre_expansion& at_i, const Site
 // Whether s is nearer than t at the centre, for choosing witnesses (a wrong choice costs boxes, never a
 // vertex). 8u (magnitude_s + magnitude_t) bounds the error of the plain difference (ERROR_BOUNDS.md).
 inline bool nearer_at_centre(const Site& s, const Centre_expansion& at_s, const Site& t, const Centre_expansion& at_t) {
-  constexpr double kUnit = 0x1p-53;
   const double difference = at_s.weighted - at_t.weighted;
-  if (std::fabs(difference) > 8 * kUnit * (at_s.magnitude + at_t.magnitude)) return difference < 0;
+  if (std::fabs(difference) > 8 * kUnitRoundoff * (at_s.magnitude + at_t.magnitude)) return difference < 0;
   return centre_difference(s, at_s, t, at_t) < 0;
 }
 
@@ -139,18 +138,17 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
 // at_j.has_corners. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
 inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
                                 const Centre_expansion& at_i, const Box_frame& frame, double& rho_i, double slack) {
-  constexpr double kUnit = 0x1p-53;
   if (!at_i.usable || !at_j.usable) return false;
   const double gap = at_i.weighted - at_j.weighted;
   // 8u (magnitude_i + magnitude_j) bounds the error of gap (ERROR_BOUNDS.md item 2): below it, i is
   // certainly closer at the centre, so not dominated.
-  if (!(gap > -slack * 8 * kUnit * (at_i.magnitude + at_j.magnitude))) return false;
+  if (!(gap > -slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude))) return false;
   if (gap > 0 && corners_dominate(at_j, at_i, frame, slack)) return true;
   // (B) needs f(c) > sum_a |g_a| h_a. Rejected here only when the plain doubles show that certainly fails
   // (ERROR_BOUNDS.md, "Centre expansion", item 5); far from both sites they cannot, and (B) decides.
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
-  if (!(gap - linear > -slack * 16 * kUnit * (at_i.magnitude + at_j.magnitude + 2 * frame.reach + linear)))
+  if (!(gap - linear > -slack * 16 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude + 2 * frame.reach + linear)))
     return false;
   if (rho_i < 0) rho_i = distance_to_box(i, frame);
   return far_dominates(j, at_j, i, at_i, rho_i, frame, slack);
