@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <optional>
 
 #include "kernels.h"
 #include "leaf_decision.h"
@@ -20,6 +20,8 @@ namespace {
 constexpr int kMaxPatchDepth = 10;
 constexpr int kStagnationLevels = 2;
 constexpr std::size_t kStagnantSites = 8;
+// Witnesses tried per patch (refine()).
+constexpr int kWitnesses = 3;
 
 struct Patch {
   int axis;     // the face of [-1, 1]^3: direction y with y[axis] = side
@@ -30,12 +32,6 @@ struct Patch {
 };
 
 using Quadruple_key = std::array<Site_index, 4>;
-
-// a = p - O, |a|^2 and |a| of an escaping site.
-struct Offset {
-  std::array<Interval, 3> a;
-  Interval norm_squared, norm;
-};
 
 // The certified far field rounds its intervals outwards; the floating path (kernels.h) evaluates the same
 // formulas in round-to-nearest, as plain doubles would. Either way the caller's mode comes back.
@@ -57,56 +53,21 @@ Interval interval_sqrt(const Interval& x) {
 template <class Kernel>
 class Far_field {
  public:
-  Far_field(const std::vector<Site>& sites, const std::vector<Site_index>& escaping, const std::array<double, 3>& origin,
-            double radius, const Axis_box& root)
-      : sites_(sites), escaping_(escaping), radius_(radius), root_(root), offsets_(sites.size()) {
-    const Far_field_rounding<Kernel> rounding;
-    for (Site_index i : escaping) {
-      Offset& o = offsets_[i];
-      o.a = {Interval(sites[i].x) - Interval(origin[0]), Interval(sites[i].y) - Interval(origin[1]),
-             Interval(sites[i].z) - Interval(origin[2])};
-      o.norm_squared = CGAL::square(o.a[0]) + CGAL::square(o.a[1]) + CGAL::square(o.a[2]);
-      o.norm = interval_sqrt<Kernel>(o.norm_squared);
-    }
-  }
+  Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius)
+      : sites_(sites), origin_(origin), radius_(radius) {}
 
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
-    std::vector<Site_index> kept;
+    std::vector<Site_index> kept = candidates;
     {
       const Far_field_rounding<Kernel> rounding;
-      // u.a + w over the directions of the patch: y = (side, s, t) in face coordinates, u = y / |y|.
-      const int first = (p.axis + 1) % 3, second = (p.axis + 2) % 3;
-      const Interval S(p.s0, p.s1), T(p.t0, p.t1);
-      const Interval norm = interval_sqrt<Kernel>(Interval(1) + CGAL::square(S) + CGAL::square(T));
-      // Over the patch, u.a for an offset a; the witness is the site whose support u.a + w is largest at
-      // the patch's middle direction. Margins are taken on differences, u.(a_j - a_k) + w_j - w_k, whose
-      // interval is as wide as |a_j - a_k| times the patch, not |a_j| + |a_k|.
-      auto projection = [&](const std::array<Interval, 3>& a) {
-        return (Interval(p.side) * a[p.axis] + S * a[first] + T * a[second]) / norm;
-      };
-      const double middle[3] = {p.side, p.s0 + (p.s1 - p.s0) / 2, p.t0 + (p.t1 - p.t0) / 2};
-      std::size_t best = 0;
-      double best_support = -std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < candidates.size(); ++k) {
-        const Offset& o = offsets_[candidates[k]];
-        const double support = middle[0] * o.a[p.axis].inf() + middle[1] * o.a[first].inf() +
-                               middle[2] * o.a[second].inf() + sites_[candidates[k]].w * std::sqrt(1 + middle[1] * middle[1] + middle[2] * middle[2]);
-        if (support > best_support) best_support = support, best = k;
-      }
-      const Site_index w = candidates[best];
-      const Offset& witness = offsets_[w];
-      // q_j = |a_j|^2 - (u.a_j)^2 over the patch, at least 0.
-      const double witness_spread = std::max(0.0, (witness.norm_squared - CGAL::square(projection(witness.a))).sup());
-      for (std::size_t k = 0; k < candidates.size(); ++k) {
-        const Site_index s = candidates[k];
-        bool removed = false;
-        if (k != best) {
-          const std::array<Interval, 3> difference = {witness.a[0] - offsets_[s].a[0], witness.a[1] - offsets_[s].a[1],
-                                                      witness.a[2] - offsets_[s].a[2]};
-          const Interval margin = projection(difference) + (Interval(sites_[w].w) - Interval(sites_[s].w));
-          removed = margin.inf() > 0 && leaves_within_radius(witness, witness_spread, margin.inf());
-        }
-        if (!removed) kept.push_back(s);
+      // A witness far from the others (a lone ball beside a small cluster) may tie with all of them, so
+      // the next witness is the best of the sites it kept, up to kWitnesses of them.
+      std::vector<Site_index> tried;
+      for (int round = 0; round < kWitnesses && kept.size() > 3; ++round) {
+        const std::optional<Site_index> w = witness(p, kept, tried);
+        if (!w) break;
+        tried.push_back(*w);
+        remove_beaten(p, sites_[*w], kept);
       }
     }
     if (kept.size() <= 3) return;
@@ -126,11 +87,53 @@ class Far_field {
   std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
 
  private:
-  // Whether a site beaten by margin m owns no point of the cone beyond the root box's inscribed ball:
-  // |a_j| + q_j / (2 m) <= radius, for the witness j. A spread that overflowed bounds nothing: the site stays.
-  bool leaves_within_radius(const Offset& witness, double witness_spread, double margin) const {
-    if (!std::isfinite(witness_spread)) return false;
-    return (witness.norm + Interval(witness_spread) / (Interval(2) * Interval(margin))).sup() <= radius_;
+  // Keeps the sites of `kept` that w may not beat everywhere in the patch's cone outside R.
+  void remove_beaten(const Patch& p, const Site& w, std::vector<Site_index>& kept) const {
+    // The box of v = y - tau (p_w - O) over the patch, y = (side, s, t) in face coordinates and
+    // tau in [0, |y| / R] (far_field.h).
+    std::array<Interval, 3> y;
+    y[p.axis] = Interval(p.side);
+    y[(p.axis + 1) % 3] = Interval(p.s0, p.s1);
+    y[(p.axis + 2) % 3] = Interval(p.t0, p.t1);
+    const Interval tau(0, (interval_sqrt<Kernel>(CGAL::square(y[0]) + CGAL::square(y[1]) + CGAL::square(y[2])) /
+                           Interval(radius_)).sup());
+    const std::array<Interval, 3> v = {y[0] - tau * (Interval(w.x) - Interval(origin_[0])),
+                                       y[1] - tau * (Interval(w.y) - Interval(origin_[1])),
+                                       y[2] - tau * (Interval(w.z) - Interval(origin_[2]))};
+    const Interval v_norm = interval_sqrt<Kernel>(CGAL::square(v[0]) + CGAL::square(v[1]) + CGAL::square(v[2]));
+    std::size_t end = 0;
+    for (Site_index s : kept) {
+      const Site& c = sites_[s];
+      // (w_w - w_s) |v| + v.(p_w - p_s) > 0 on the whole box: s owns no point of the cone outside R.
+      const Interval margin = (Interval(w.w) - Interval(c.w)) * v_norm + v[0] * (Interval(w.x) - Interval(c.x)) +
+                              v[1] * (Interval(w.y) - Interval(c.y)) + v[2] * (Interval(w.z) - Interval(c.z));
+      if (!(margin.inf() > 0)) kept[end++] = s;
+    }
+    kept.resize(end);
+  }
+
+  // The site of `kept` not yet tried that looks nearest far away in the patch's middle direction y: the
+  // largest y.p + w |y|. Only a choice (plain doubles), compared by differences p_k - p_best so that a
+  // small cluster far from O is still ordered; every removal is certified in remove_beaten().
+  std::optional<Site_index> witness(const Patch& p, const std::vector<Site_index>& kept,
+                                    const std::vector<Site_index>& tried) const {
+    std::array<double, 3> y;
+    y[p.axis] = p.side;
+    y[(p.axis + 1) % 3] = p.s0 + (p.s1 - p.s0) / 2;
+    y[(p.axis + 2) % 3] = p.t0 + (p.t1 - p.t0) / 2;
+    const double y_norm = std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
+    std::optional<Site_index> best;
+    for (Site_index k : kept) {
+      if (std::find(tried.begin(), tried.end(), k) != tried.end()) continue;
+      if (!best) {
+        best = k;
+        continue;
+      }
+      const Site& a = sites_[k];
+      const Site& b = sites_[*best];
+      if (y[0] * (a.x - b.x) + y[1] * (a.y - b.y) + y[2] * (a.z - b.z) + (a.w - b.w) * y_norm > 0) best = k;
+    }
+    return best;
   }
 
   // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
@@ -144,24 +147,22 @@ class Far_field {
   }
 
   const std::vector<Site>& sites_;
-  const std::vector<Site_index>& escaping_;
+  std::array<double, 3> origin_;
   double radius_;
-  Axis_box root_;
-  std::vector<Offset> offsets_;
   std::vector<Quadruple_key> quadruples_;
 };
 
 }  // namespace
 
 template <class Kernel>
-std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root) {
   if (escaping.size() < 4) return {};
   // The six faces of the direction cube are refined independently; neighbouring patches share most of
   // their quadruples, so those are collected first and each is decided once.
   std::vector<std::vector<Quadruple_key>> by_face(6);
   tbb::parallel_for(0, 6, [&](int face) {
-    Far_field<Kernel> field(sites, escaping, origin, radius, root);
+    Far_field<Kernel> field(sites, origin, radius);
     field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, escaping);
     by_face[face] = field.take_quadruples();
   });
@@ -192,12 +193,12 @@ std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std
     for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
     i = end;
   }
-  return unique;
+  return {std::move(unique), quadruples.size()};
 }
 
-template std::vector<Found_vertex> far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
-                                                                 const std::array<double, 3>&, double, const Axis_box&);
-template std::vector<Found_vertex> far_vertices<Floating_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
-                                                                const std::array<double, 3>&, double, const Axis_box&);
+template Far_field_vertices far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
+                                                          const std::array<double, 3>&, double, const Axis_box&);
+template Far_field_vertices far_vertices<Floating_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
+                                                         const std::array<double, 3>&, double, const Axis_box&);
 
 }  // namespace apollonius

@@ -1,18 +1,19 @@
-// The vertices far outside the sites: those outside the octree's root box.
+// The vertices far outside the sites: those outside the octree's root box R.
 //
-// For x = O + t u (|u| = 1) and a = p - O, |x - p| = sqrt(s^2 + q) with s = t - u.a and q = |a|^2 - (u.a)^2.
-// Hence |x - p| >= s always, and |x - p| <= s + q / (2 s) when s > 0. Writing h_k(u) = u.a_k + w_k,
-//     d_i(x) - d_j(x) >= h_j(u) - h_i(u) - q_j / (2 (t - |a_j|))   for t > |a_j|,
-// and if h_j - h_i >= m > 0 on a cone of directions, site i owns no point of that cone beyond
-// t = |a_j| + q_j / (2 m). The directions are cut into patches (squares on the faces of the cube
-// [-1, 1]^3), and a site leaves a patch only when that distance is within the root box's inscribed
-// ball. Refinement stops at 3 remaining sites (no vertex can lie in the patch's cone outside the root
-// box) or at a maximum depth, where every vertex outside the root box in that cone has its tie set among
-// the remaining sites: their quadruples are enumerated and decided exactly against the escaping sites.
-// All bounds use outward-rounded intervals.
+// R contains the ball of radius R about O. A point x outside R is x = O + r y with y on a face of the cube
+// [-1, 1]^3 and r >= R / |y|. For a site w, x - p_w = r v with v = y - tau (p_w - O), tau = 1 / r in
+// [0, |y| / R]. Since |x - p_i| >= e.(x - p_i) for the unit vector e = v / |v|,
+//     d_i(x) - d_w(x) >= w_w - w_i + e.(p_w - p_i),
+// so site i owns no point outside R in a cone of directions y where (w_w - w_i) |v| + v.(p_w - p_i) > 0
+// for every v. Only differences p_w - p_i enter, so a small cluster far from O is separated as well as
+// one at O. The directions are cut into patches (squares on the faces of the cube), and refinement stops
+// at 3 remaining sites (no vertex can lie in the patch's cone outside R) or at a maximum depth, where
+// every vertex outside R in that cone has its tie set among the remaining sites: their quadruples are
+// enumerated and decided exactly against the escaping sites. All bounds use outward-rounded intervals.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -21,11 +22,16 @@
 
 namespace apollonius {
 
-// Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping` must contain every
-// site that owns a point outside the box, and the root box must contain the ball of radius `radius`
-// about `origin`.
+struct Far_field_vertices {
+  std::vector<Found_vertex> vertices;
+  std::size_t quadruples = 0;  // distinct quadruples decided exactly
+};
+
+// Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping`
+// must contain every site that owns a point outside the box, and the root box must contain the ball of
+// radius `radius` about `origin`.
 template <class Kernel>
-std::vector<Found_vertex> far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root);
 
 }  // namespace apollonius

@@ -86,7 +86,9 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       statistics.distinct_quadruples += counts.distinct_quadruples;
     }
     statistics.refinement_seconds = timer.lap();
-    vertices = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
+    Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
+    vertices = std::move(far.vertices);
+    statistics.far_field_quadruples = far.quadruples;
     statistics.far_field_seconds = timer.lap();
   });
   for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(vertices));

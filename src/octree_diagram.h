@@ -31,7 +31,7 @@ struct Octree_statistics {
   double partition_seconds = 0, propagation_seconds = 0, refinement_seconds = 0, far_field_seconds = 0,
          assembly_seconds = 0;
   std::size_t seed_boxes = 0, seed_candidates = 0, escaping_sites = 0, boxes = 0, leaves = 0, leaf_candidates = 0,
-              quadruples = 0, distinct_quadruples = 0;
+              quadruples = 0, distinct_quadruples = 0, far_field_quadruples = 0;
 };
 
 // Certified: every decision exact (the default). Floating: the same algorithm in plain doubles, no filter

@@ -33,7 +33,7 @@ constexpr bool lists_every_family_in_enum_order() {
   std::size_t i = 0;
   for (const Site_family_description& d : kSiteFamilies)
     if (static_cast<std::size_t>(d.family) != i++) return false;
-  return i == static_cast<std::size_t>(Site_family::far_vertices) + 1;
+  return i == static_cast<std::size_t>(Site_family::wide_range) + 1;
 }
 static_assert(lists_every_family_in_enum_order());
 
@@ -151,6 +151,17 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
         } else {
           sites.push_back({random.eighths(-2, 2), random.eighths(-2, 2), random.eighths(-6, -2), 0.25});
         }
+        break;
+      }
+      case Site_family::wide_range: {
+        // Small clusters seen from far away, and far balls seen from a small cluster.
+        Site s = random_site(random, 10, 0.5, 3);
+        const long choice = random.integer(0, 7);
+        if (choice < 2) {
+          const int e = static_cast<int>(random.integer(20, 900)) * (choice == 0 ? 1 : -1);
+          s = {std::ldexp(s.x, e), std::ldexp(s.y, e), std::ldexp(s.z, e), std::ldexp(s.w, e)};
+        }
+        sites.push_back(s);
         break;
       }
       case Site_family::scaled_up:

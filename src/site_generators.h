@@ -25,6 +25,7 @@ enum class Site_family {
   scaled_down,
   lattice_noise,
   far_vertices,
+  wide_range,
 };
 
 struct Site_family_description {
@@ -49,6 +50,7 @@ inline constexpr Site_family_description kSiteFamilies[] = {
     {Site_family::scaled_down, "scaled-down", "uniform, scaled by 2^-300"},
     {Site_family::lattice_noise, "lattice-noise", "lattice points moved by one ulp: vertices nearly, but not exactly, coincide"},
     {Site_family::far_vertices, "far-vertices", "nearly cocircular points above a cloud: vertices 10^6 input diameters away"},
+    {Site_family::wide_range, "wide-range", "uniform, one site in eight scaled by 2^k and one by 2^-k, k from 20 to 900"},
 };
 
 const std::vector<std::string>& site_family_names();

@@ -71,6 +71,15 @@ TEST_CASE("regression: octree_boxes_explode_for_far_balls") {
   }
 }
 
+// 20 small balls and two balls 1e9 away: the far field measured its bound from the centre O of the site
+// box, which could not tell the small balls apart seen from O, so its patches refined to the last depth and
+// enumerated 5,985 distinct quadruples (12 s, 1.7 GB). It now bounds from the witness's own centre and tries more
+// than one witness: 61 quadruples.
+TEST_CASE("regression: far_field_slow_for_cluster_and_two_balls_1e9_away") {
+  const Octree_statistics statistics = check_octree_equals_brute_force("far_field_slow_for_cluster_and_two_balls_1e9_away.balls");
+  CHECK(statistics.far_field_quadruples < 1000);
+}
+
 // Too large for the brute force (C(300, 4) quadruples): every vertex is validated exactly against every
 // site, and Voronota finds the same 870 (bench/README.md, certify on Ext_I_Congruent_300).
 TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {

@@ -104,7 +104,8 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << "octree count\n"
       << "seed_boxes " << s.seed_boxes << "\nseed_candidates " << s.seed_candidates << "\nescaping_sites "
       << s.escaping_sites << "\nboxes " << s.boxes << "\nleaves " << s.leaves << "\nleaf_candidates "
-      << s.leaf_candidates << "\nquadruples " << s.quadruples << "\ndistinct_quadruples " << s.distinct_quadruples << '\n';
+      << s.leaf_candidates << "\nquadruples " << s.quadruples << "\ndistinct_quadruples " << s.distinct_quadruples
+      << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
 }
 
 int run_vertices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
