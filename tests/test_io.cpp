@@ -417,6 +417,15 @@ TEST_CASE("regression: gemmi_ssbond_overread") {
   CHECK(read_text(file_content(file)).sites == sites);  // the same by content
 }
 
+TEST_CASE("regression: gemmi_dbref2_integer_overflow") {
+  // Under UndefinedBehaviorSanitizer (APOLLONIUS_SANITIZE, scripts/fuzz.sh) gemmi's int overflow aborted;
+  // the DBREF records are now blanked before gemmi reads them, and the atom is read.
+  const std::string file = std::string(APOLLONIUS_TEST_DATA) + "/regression/gemmi_dbref2_integer_overflow.pdb";
+  const std::vector<Site> sites = read_sites(file, default_options).sites;
+  REQUIRE(sites.size() == 1);
+  CHECK(sites[0] == Site{1, 2, 3, 1.80});
+}
+
 TEST_CASE("regression: gemmi_line_split_at_high_byte") {
   // gemmi took an SSBOND in the middle of a long line, after a byte 0xff, for a record of its own and
   // over-read it (found by fuzz_read_sites). Now lines split as in the file, and line 5's coordinate

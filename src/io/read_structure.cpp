@@ -151,7 +151,9 @@ void check_atom_coordinates(std::string_view line, const std::string& name, std:
 // gemmi 0.5.7 reads the distance of an SSBOND or LINK record (columns 74-78) from any such line longer
 // than 73 bytes, and so reads past the end of a line of 74 to 77 (regression/gemmi_ssbond_overread.pdb).
 // gemmi collects these records and CISPEP only for bonds, which no radius needs: they are blanked here,
-// their line breaks kept so that gemmi's line numbers stay right.
+// their line breaks kept so that gemmi's line numbers stay right. So are DBREF records (sequence database
+// references): gemmi reads DBREF2's 10-column numbers into an int, which overflows
+// (regression/gemmi_dbref2_integer_overflow.pdb).
 // gemmi skips the rest of a line longer than it reads only up to a byte above 0x7f (its getc returns a
 // signed char), and starts its next line there: such a "line" may be a short SSBOND record
 // (regression/gemmi_line_split_at_high_byte.pdb). PDB is ASCII; such bytes can only stand in names or
@@ -165,7 +167,8 @@ std::string gemmi_safe_pdb_text(std::string_view pdb, const std::string& name) {
     const std::size_t end = std::min(pdb.find('\n', start), pdb.size() - 1) + 1;  // past the line break
     const std::string_view line = pdb.substr(start, end - start);
     check_atom_coordinates(line, name, number);
-    if (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK") || starts_with_record(line, "CISP")) {
+    if (starts_with_record(line, "SSBO") || starts_with_record(line, "LINK") || starts_with_record(line, "CISP") ||
+        starts_with_record(line, "DBRE")) {
       kept += line.back() == '\n' ? "\n" : "";
     } else {
       for (const char c : line) kept += static_cast<unsigned char>(c) > 0x7f ? '?' : c;
