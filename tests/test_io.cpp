@@ -426,6 +426,17 @@ TEST_CASE("regression: gemmi_dbref2_integer_overflow") {
   CHECK(sites[0] == Site{1, 2, 3, 1.80});
 }
 
+TEST_CASE("regression: gemmi_cif_integer_overflow") {
+  // gemmi's mmCIF integers overflowed on ten or more digits (UBSan abort); such values are refused, except
+  // in the decimal columns, where a long number is a coordinate like any other.
+  const std::string file = std::string(APOLLONIUS_TEST_DATA) + "/regression/gemmi_cif_integer_overflow.cif";
+  check_input_error([&] { read_sites(file, default_options); }, file, 0,
+                    "number too long for gemmi's integers in _atom_site.auth_seq_id: '1333333333333'");
+  std::string mmcif = small_mmcif;
+  mmcif.replace(mmcif.find("4.868"), 5, "12345678901.5");
+  CHECK(read_text(mmcif).sites.front().x == 12345678901.5);
+}
+
 TEST_CASE("regression: gemmi_line_split_at_high_byte") {
   // gemmi took an SSBOND in the middle of a long line, after a byte 0xff, for a record of its own and
   // over-read it (found by fuzz_read_sites). Now lines split as in the file, and line 5's coordinate

@@ -178,6 +178,36 @@ std::string gemmi_safe_pdb_text(std::string_view pdb, const std::string& name) {
   return kept;
 }
 
+// gemmi 0.5.7 reads mmCIF integers (sequence numbers, atom ids, charges, counts) with no overflow check:
+// ten or more digits overflow an int (regression/gemmi_cif_integer_overflow.cif). A value whose leading
+// digits are that long is refused, except in the decimal columns that gemmi reads as doubles.
+void check_cif_integer_lengths(const gemmi::cif::Block& block, const std::string& name) {
+  const auto check = [&](const std::string& tag, const std::string& value) {
+    static const char* const decimal_columns[] = {"_atom_site.cartn_x", "_atom_site.cartn_y", "_atom_site.cartn_z",
+                                                  "_atom_site.occupancy", "_atom_site.b_iso_or_equiv"};
+    std::string lower = tag;  // CIF tags are case-insensitive
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (std::find(std::begin(decimal_columns), std::end(decimal_columns), lower) != std::end(decimal_columns)) return;
+    std::size_t i = value.find_first_not_of(' ');
+    if (i < value.size() && (value[i] == '-' || value[i] == '+')) ++i;
+    std::size_t digits = 0;
+    while (i + digits < value.size() && std::isdigit(static_cast<unsigned char>(value[i + digits]))) ++digits;
+    if (digits >= 10) throw Input_error(name, 0, "number too long for gemmi's integers in " + tag + ": '" + value + "'");
+  };
+  for (const gemmi::cif::Item& item : block.items) {
+    if (item.type == gemmi::cif::ItemType::Pair) check(item.pair[0], item.pair[1]);
+    if (item.type == gemmi::cif::ItemType::Loop)
+      for (std::size_t k = 0; k < item.loop.values.size(); ++k)
+        check(item.loop.tags[k % item.loop.tags.size()], item.loop.values[k]);
+    if (item.type == gemmi::cif::ItemType::Frame) check_cif_integer_lengths(item.frame, name);
+  }
+}
+
+gemmi::Structure parse_cif(gemmi::cif::Document document, const std::string& name) {
+  for (const gemmi::cif::Block& block : document.blocks) check_cif_integer_lengths(block, name);
+  return gemmi::make_structure(std::move(document));
+}
+
 gemmi::Structure parse_pdb(std::string_view pdb, const std::string& name) {
   reject_binary_data(pdb, name);
   const std::string text = gemmi_safe_pdb_text(pdb, name);
@@ -188,7 +218,7 @@ gemmi::Structure parse_structure(const std::string& path_or_name, const std::str
   if (content == nullptr) {
     gemmi::MaybeGzipped input(path_or_name);
     if (gemmi::coor_format_from_ext(input.basepath()) == gemmi::CoorFormat::Mmcif) {
-      return gemmi::make_structure(gemmi::cif::read(input));
+      return parse_cif(gemmi::cif::read(input), path_or_name);
     }
     const gemmi::CharArray text = gemmi::read_into_buffer(input);
     return parse_pdb(std::string_view(text.data(), text.size()), path_or_name);
@@ -196,7 +226,7 @@ gemmi::Structure parse_structure(const std::string& path_or_name, const std::str
   // gemmi's own test: mmCIF if the first line that is not blank nor a '#' comment starts with "data_".
   const char* const begin = content->data();
   if (gemmi::coor_format_from_content(begin, begin + content->size()) == gemmi::CoorFormat::Mmcif) {
-    return gemmi::make_structure(gemmi::cif::read_memory(content->data(), content->size(), path_or_name.c_str()));
+    return parse_cif(gemmi::cif::read_memory(content->data(), content->size(), path_or_name.c_str()), path_or_name);
   }
   return parse_pdb(*content, path_or_name);
 }
