@@ -181,31 +181,42 @@ std::string gemmi_safe_pdb_text(std::string_view pdb, const std::string& name) {
 // gemmi 0.5.7 reads mmCIF integers (sequence numbers, atom ids, charges, counts) with no overflow check:
 // ten or more digits overflow an int (regression/gemmi_cif_integer_overflow.cif). A value whose leading
 // digits are that long is refused, except in the decimal columns that gemmi reads as doubles.
+bool is_decimal_column(std::string tag) {
+  for (char& c : tag) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));  // tags ignore case
+  for (const char* decimal : {"_atom_site.cartn_x", "_atom_site.cartn_y", "_atom_site.cartn_z", "_atom_site.occupancy",
+                              "_atom_site.b_iso_or_equiv"})
+    if (tag == decimal) return true;
+  return false;
+}
+
+bool has_ten_leading_digits(const std::string& value) {
+  std::size_t i = !value.empty() && (value[0] == '-' || value[0] == '+') ? 1 : 0;
+  const std::size_t first = i;
+  while (i < value.size() && std::isdigit(static_cast<unsigned char>(value[i]))) ++i;
+  return i - first >= 10;
+}
+
 void check_cif_integer_lengths(const gemmi::cif::Block& block, const std::string& name) {
   const auto check = [&](const std::string& tag, const std::string& value) {
-    static const char* const decimal_columns[] = {"_atom_site.cartn_x", "_atom_site.cartn_y", "_atom_site.cartn_z",
-                                                  "_atom_site.occupancy", "_atom_site.b_iso_or_equiv"};
-    std::string lower = tag;  // CIF tags are case-insensitive
-    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (std::find(std::begin(decimal_columns), std::end(decimal_columns), lower) != std::end(decimal_columns)) return;
-    std::size_t i = value.find_first_not_of(' ');
-    if (i < value.size() && (value[i] == '-' || value[i] == '+')) ++i;
-    std::size_t digits = 0;
-    while (i + digits < value.size() && std::isdigit(static_cast<unsigned char>(value[i + digits]))) ++digits;
-    if (digits >= 10) throw Input_error(name, 0, "number too long for gemmi's integers in " + tag + ": '" + value + "'");
+    if (has_ten_leading_digits(value))
+      throw Input_error(name, 0, "number too long for gemmi's integers in " + tag + ": '" + value + "'");
   };
   for (const gemmi::cif::Item& item : block.items) {
-    if (item.type == gemmi::cif::ItemType::Pair) check(item.pair[0], item.pair[1]);
-    if (item.type == gemmi::cif::ItemType::Loop)
+    if (item.type == gemmi::cif::ItemType::Pair && !is_decimal_column(item.pair[0])) check(item.pair[0], item.pair[1]);
+    if (item.type == gemmi::cif::ItemType::Loop && !item.loop.tags.empty()) {
+      const std::vector<std::string>& tags = item.loop.tags;
+      std::vector<bool> checked(tags.size());
+      for (std::size_t t = 0; t < tags.size(); ++t) checked[t] = !is_decimal_column(tags[t]);
       for (std::size_t k = 0; k < item.loop.values.size(); ++k)
-        check(item.loop.tags[k % item.loop.tags.size()], item.loop.values[k]);
+        if (checked[k % tags.size()]) check(tags[k % tags.size()], item.loop.values[k]);
+    }
     if (item.type == gemmi::cif::ItemType::Frame) check_cif_integer_lengths(item.frame, name);
   }
 }
 
-gemmi::Structure parse_cif(gemmi::cif::Document document, const std::string& name) {
+gemmi::Structure parse_cif(const gemmi::cif::Document& document, const std::string& name) {
   for (const gemmi::cif::Block& block : document.blocks) check_cif_integer_lengths(block, name);
-  return gemmi::make_structure(std::move(document));
+  return gemmi::make_structure(document);
 }
 
 gemmi::Structure parse_pdb(std::string_view pdb, const std::string& name) {
