@@ -62,12 +62,13 @@ class Far_field {
       const Far_field_rounding<Kernel> rounding;
       // A witness far from the others (a lone ball beside a small cluster) may tie with all of them, so
       // the next witness is the best of the sites it kept, up to kWitnesses of them.
+      const Direction_box directions = direction_box(p);
       std::vector<Site_index> tried;
       for (int round = 0; round < kWitnesses && kept.size() > 3; ++round) {
         const std::optional<Site_index> w = witness(p, kept, tried);
         if (!w) break;
         tried.push_back(*w);
-        remove_beaten(p, sites_[*w], kept);
+        remove_beaten(directions, sites_[*w], kept);
       }
     }
     if (kept.size() <= 3) return;
@@ -87,16 +88,27 @@ class Far_field {
   std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
 
  private:
-  // Keeps the sites of `kept` that w may not beat everywhere in the patch's cone outside R.
-  void remove_beaten(const Patch& p, const Site& w, std::vector<Site_index>& kept) const {
-    // The box of v = y - tau (p_w - O) over the patch, y = (side, s, t) in face coordinates and
-    // tau in [0, |y| / R] (far_field.h).
+  // The patch's directions y = (side, s, t) in face coordinates, and tau in [0, |y| / R] (far_field.h).
+  struct Direction_box {
     std::array<Interval, 3> y;
-    y[p.axis] = Interval(p.side);
-    y[(p.axis + 1) % 3] = Interval(p.s0, p.s1);
-    y[(p.axis + 2) % 3] = Interval(p.t0, p.t1);
-    const Interval tau(0, (interval_sqrt<Kernel>(CGAL::square(y[0]) + CGAL::square(y[1]) + CGAL::square(y[2])) /
-                           Interval(radius_)).sup());
+    Interval tau;
+  };
+
+  Direction_box direction_box(const Patch& p) const {
+    Direction_box box;
+    box.y[p.axis] = Interval(p.side);
+    box.y[(p.axis + 1) % 3] = Interval(p.s0, p.s1);
+    box.y[(p.axis + 2) % 3] = Interval(p.t0, p.t1);
+    const Interval y_norm = interval_sqrt<Kernel>(CGAL::square(box.y[0]) + CGAL::square(box.y[1]) + CGAL::square(box.y[2]));
+    box.tau = Interval(0, (y_norm / Interval(radius_)).sup());
+    return box;
+  }
+
+  // Keeps the sites of `kept` that w may not beat everywhere in the patch's cone outside R.
+  void remove_beaten(const Direction_box& directions, const Site& w, std::vector<Site_index>& kept) const {
+    // The box of v = y - tau (p_w - O) over the patch.
+    const std::array<Interval, 3>& y = directions.y;
+    const Interval& tau = directions.tau;
     const std::array<Interval, 3> v = {y[0] - tau * (Interval(w.x) - Interval(origin_[0])),
                                        y[1] - tau * (Interval(w.y) - Interval(origin_[1])),
                                        y[2] - tau * (Interval(w.z) - Interval(origin_[2]))};
