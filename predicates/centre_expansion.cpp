@@ -79,18 +79,17 @@ Witness_expansion expand_witness(const Site& s, const Box_frame& frame) {
 }
 
 void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame) {
-  double largest = 0;
+  double farthest = 0;
   for (int q = 0; q < 8; ++q) {
     const double dx = ((q & 1 ? frame.box.hi[0] : frame.box.lo[0]) - s.x) * frame.unit;
     const double dy = ((q & 2 ? frame.box.hi[1] : frame.box.lo[1]) - s.y) * frame.unit;
     const double dz = ((q & 4 ? frame.box.hi[2] : frame.box.lo[2]) - s.z) * frame.unit;
     const double squared = dx * dx + dy * dy + dz * dz;
     e.usable = e.usable && in_error_bound_range(squared);
-    const double distance = std::sqrt(squared);
-    e.corner[q] = distance - s.w * frame.unit;
-    largest = std::max(largest, distance);
+    e.corner_distance[q] = std::sqrt(squared);
+    farthest = std::max(farthest, e.corner_distance[q]);
   }
-  e.corner_magnitude = largest + std::fabs(s.w * frame.unit);
+  e.farthest_corner = farthest;
   e.has_corners = true;
 }
 

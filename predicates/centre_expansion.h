@@ -1,12 +1,19 @@
 // Certified tests for removing a candidate site i from a box: site j (the witness) is strictly closer than
 // i at every point of the box. With c the box centre, u_k = grad d_k(c) and y the eight corners:
 //
-//  (A) Corners. d_i is convex, so d_i(x) >= d_i(c) + u_i.(x - c); d_j is convex, so by Jensen d_j(x) is at
-//      most the trilinear interpolation of its values at the corners. The difference of the two bounds
-//      is linear in each coordinate, hence least at a corner: j dominates i on the box if
-//          d_i(c) + u_i.(y - c) > d_j(y)   at each corner y.
-//      This refines paper Theorems 6 and 8 at once, for either order of the weights, and it has no
-//      curvature term for the witness, which is what a witness near (or in) the box needs.
+//  (A) Corners. With W = w_j - w_i and T(x) = |x - x_j| - W, so that d_i - d_j = |x - x_i| - T,
+//          G(x) = |x - x_i|^2 - |x - x_j|^2 + 2W |x - x_j| - W^2 = |x - x_i|^2 - T(x)^2,
+//      and G > 0 on the box gives |x - x_i| > |T| >= T there: j dominates i. The first two terms of G
+//      differ by an affine function of x, and 2W |x - x_j| is bounded below by a function affine in each
+//      coordinate: for W > 0 by 2W b_j(x), b_j(x) = |c - x_j| + u_j.(x - c) the tangent plane of the convex
+//      |x - x_j|; for W <= 0 by 2W times the trilinear interpolation of |y - x_j| (Jensen). That bound of G
+//      is least at a corner, so j dominates i on the box if at each corner y
+//          |y - x_i|^2 - |y - x_j|^2 + 2W b_j(y) - W^2 > 0      (W > 0),
+//          |y - x_i|^2 - (|y - x_j| - W)^2 > 0                  (W <= 0).
+//      W <= 0, a witness no larger than i, is paper Theorem 8.1, and exact up to rounding: G is concave, so
+//      least at a corner, and d_i(y) > d_j(y) gives |y - x_i| > T(y) >= 0, hence G(y) > 0. W > 0 replaces
+//      Theorem 8.2 (the bisector's tangent plane) and gives away 2W (|x - x_j| - b_j(x)) of G: little
+//      while W is small against |c - x_j|, as for the atoms of a molecule.
 //  (B) Far boxes. With f = d_i - d_j, g = u_i - u_j, h_a the half-extents and H >= |x - c| on the box,
 //          f(c) > min( L H,  sum_a |g_a| h_a + kappa H^2 / 2 )
 //      where L = min(2, 2D / (rho_i + rho_j)) bounds |grad f| (Dunkl-Williams; D = |x_i - x_j|, rho_k the
@@ -63,13 +70,14 @@ struct Centre_expansion {
   bool usable;                     // every magnitude lies where the error bounds hold
 };
 
-// A witness also needs its distance to the box, rho_j, and d_j at the corners (corner[q], corner q having
-// the upper bound on axis a when bit a of q is set), computed when first needed (add_corners).
+// A witness also needs its distance to the box, rho_j, and |y - x_j| at the corners (corner_distance[q],
+// corner q having the upper bound on axis a when bit a of q is set), computed when first needed
+// (add_corners): test (A) uses them when the witness is no larger than the candidate.
 struct Witness_expansion : Centre_expansion {
   double distance_to_box;  // 0 when x_j lies in the box
   bool has_corners = false;
-  std::array<double, 8> corner;
-  double corner_magnitude;  // largest |y - x_j| + |w_j| over the corners
+  std::array<double, 8> corner_distance;
+  double farthest_corner;  // the largest corner_distance
 };
 
 // Sums of squares inside [kTinySquare, kHugeSquare] (or exactly 0) keep the relative error bounds of
@@ -103,17 +111,42 @@ void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
 // The computed distance from x_s to the box of `frame` (rho_s, box units), or -1 out of range.
 double distance_to_box(const Site& s, const Box_frame& frame);
 
-// Test (A). The margin covers the rounding errors of both sides (ERROR_BOUNDS.md "Centre expansion").
-inline bool corners_dominate(const Witness_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
-                             double slack) {
+// Test (A). The margins cover the rounding errors of the corner values (ERROR_BOUNDS.md "Centre
+// expansion", item 3). Precondition: at_j.has_corners.
+inline bool corners_dominate(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
+                             const Box_frame& frame, double slack) {
   if (!at_i.usable || !at_j.usable) return false;
-  const double margin = slack * 32 * kUnitRoundoff * (at_i.magnitude + frame.reach + at_j.corner_magnitude);
-  double term[2][3];
+  const double w = (j.w - i.w) * frame.unit;  // W, of the sign of j.w - i.w
+  double square_i[2][3];  // (y_a - x_ia)^2 for the lower and upper bound of axis a
   for (int a = 0; a < 3; ++a)
-    for (int side = 0; side < 2; ++side) term[side][a] = at_i.gradient[a] * frame.corner_offset[side][a];
+    for (int side = 0; side < 2; ++side) {
+      const double e = frame.corner_offset[side][a] + at_i.offset[a];
+      square_i[side][a] = e * e;
+    }
+  const double outer_i = at_i.magnitude + frame.reach;
+  if (j.w <= i.w) {
+    const double outer_j = at_j.farthest_corner - w;
+    const double margin = slack * 32 * kUnitRoundoff * (outer_i * outer_i + outer_j * outer_j);
+    for (int q = 0; q < 8; ++q) {
+      const double t = at_j.corner_distance[q] - w;
+      const double value = square_i[q & 1][0] + square_i[q >> 1 & 1][1] + square_i[q >> 2 & 1][2] - t * t;
+      if (!(value > margin)) return false;  // a NaN certifies nothing either
+    }
+    return true;
+  }
+  double term[2][3];  // the part of axis a: (y_a - x_ia)^2 - (y_a - x_ja)^2 + 2W u_ja (y_a - c_a)
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) {
+      const double e = frame.corner_offset[side][a] + at_j.offset[a];
+      term[side][a] = square_i[side][a] - e * e + 2 * w * (at_j.gradient[a] * frame.corner_offset[side][a]);
+    }
+  const double constant = 2 * w * at_j.distance - w * w;
+  const double outer_j = at_j.magnitude + frame.reach;
+  const double margin =
+      slack * 48 * kUnitRoundoff * (outer_i * outer_i + outer_j * outer_j + 2 * w * (outer_j + frame.reach) + w * w);
   for (int q = 0; q < 8; ++q) {
-    const double value = at_i.weighted + term[q & 1][0] + term[q >> 1 & 1][1] + term[q >> 2 & 1][2] - at_j.corner[q];
-    if (!(value > margin)) return false;  // a NaN certifies nothing either
+    const double value = term[q & 1][0] + term[q >> 1 & 1][1] + term[q >> 2 & 1][2] + constant;
+    if (!(value > margin)) return false;
   }
   return true;
 }
@@ -143,7 +176,7 @@ inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, co
   // 8u (magnitude_i + magnitude_j) bounds the error of gap (ERROR_BOUNDS.md item 2): below it, i is
   // certainly closer at the centre, so not dominated.
   if (!(gap > -slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude))) return false;
-  if (gap > 0 && corners_dominate(at_j, at_i, frame, slack)) return true;
+  if (gap > 0 && corners_dominate(j, at_j, i, at_i, frame, slack)) return true;
   // (B) needs f(c) > sum_a |g_a| h_a. Rejected here only when the plain doubles show that certainly fails
   // (ERROR_BOUNDS.md, "Centre expansion", item 5); far from both sites they cannot, and (B) decides.
   double linear = 0;

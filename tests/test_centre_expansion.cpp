@@ -8,12 +8,14 @@
 // A failure prints the family, the case and its seed; APOLLONIUS_CENTRE_EXPANSION_SEED overrides the base seed.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "centre_expansion.h"
 #include "number_types.h"
@@ -166,4 +168,39 @@ TEST_CASE("a pair seen from up to 2^900 times its separation is separated, at ev
       CHECK(outcome.dominated);
       CHECK(outcome.sound);
     }
+}
+
+// Test (A) with a witness no larger than the candidate is exact up to rounding (paper Theorem 8.1): j is
+// then closer than i on the whole box as soon as it is closer at the eight corners, and the test must
+// remove i whenever the corners show that by more than the rounding margins.
+TEST_CASE("a witness no larger than the candidate, closer at the eight corners, removes it") {
+  const std::uint64_t seed0 = base_seed();
+  int required = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const std::uint64_t seed = seed0 + static_cast<std::uint64_t>(k) * 7919;
+    Random random(seed);
+    // Boxes as large as their distance to the sites, where bounding d_i by its tangent plane loses most.
+    Site i{random.eighths(4), random.eighths(4), random.eighths(4), std::round(random.unit() * 16) / 8};
+    Site j{random.eighths(4), random.eighths(4), random.eighths(4), std::round(random.unit() * 16) / 8};
+    if (j.w > i.w) std::swap(i.w, j.w);
+    const Axis_box box = dyadic_cube({4 * random.symmetric(), 4 * random.symmetric(), 4 * random.symmetric()},
+                                     random.integer(-3, 1));
+    // Closer at every corner by far more than any rounding (plain doubles suffice to choose the cases).
+    bool closer_at_corners = true;
+    for (int q = 0; q < 8; ++q) {
+      const double y[3] = {q & 1 ? box.hi[0] : box.lo[0], q & 2 ? box.hi[1] : box.lo[1], q & 4 ? box.hi[2] : box.lo[2]};
+      const auto d = [&](const Site& s) { return std::hypot(y[0] - s.x, y[1] - s.y, y[2] - s.z) - s.w; };
+      closer_at_corners = closer_at_corners && d(i) - d(j) > 1e-9;
+    }
+    if (!closer_at_corners) continue;
+    ++required;
+    const int e = random.integer(-60, 60) * 15;
+    const Outcome outcome = check_pair(scaled(box, e), scaled(i, e), scaled(j, e), random);
+    CAPTURE(k);
+    CAPTURE(seed);
+    CHECK(outcome.dominated);
+    CHECK(outcome.sound);
+  }
+  MESSAGE(required << " pairs closer at the corners, each required to be removed");
+  CHECK(required >= 500);
 }
