@@ -112,7 +112,7 @@ void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
 double distance_to_box(const Site& s, const Box_frame& frame);
 
 // Test (A). The margins cover the rounding errors of the corner values (ERROR_BOUNDS.md "Centre
-// expansion", item 3). Precondition: at_j.has_corners.
+// expansion", item 3). Precondition: at_j.has_corners if j.w <= i.w.
 inline bool corners_dominate(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
                              const Box_frame& frame, double slack) {
   if (!at_i.usable || !at_j.usable) return false;
@@ -168,7 +168,7 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
                    double rho_i, const Box_frame& frame, double slack);
 
 // True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
-// at_j.has_corners. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
+// at_j.has_corners if j.w <= i.w. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
 inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
                                 const Centre_expansion& at_i, const Box_frame& frame, double& rho_i, double slack) {
   if (!at_i.usable || !at_j.usable) return false;

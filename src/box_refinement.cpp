@@ -14,7 +14,7 @@ constexpr std::size_t kLeafCandidates = 6;
 // The quadruple cache holds at most about this many quadruples (each up to two vertices, ~0.5 KB).
 constexpr std::size_t kCachedQuadruples = 8192;
 // Each candidate is tested against this many of the best candidates at the box centre.
-constexpr std::size_t kWitnesses = 3;
+constexpr std::size_t kWitnesses = 4;
 // Refining stops helping when the candidate count has not dropped for kStagnationLevels levels and the box
 // is tiny against its distance to every candidate centre (kTinyBox half-diagonals): refining cannot
 // separate candidates that tie at a point (a degenerate vertex) or along a curve. Boxes near site centres
@@ -135,7 +135,8 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
     // The witnesses before k in that order.
     for (std::size_t w = 0; w < witnesses && !dominated && witness[w] != k; ++w) {
       const Site& j = sites_[stack_[first + witness[w]]];
-      if (!at_witness[w].has_corners) add_corners(at_witness[w], j, frame);  // only witnesses that get used
+      // Test (A) needs the witness's corner distances against a candidate no smaller than it.
+      if (!at_witness[w].has_corners && j.w <= s.w) add_corners(at_witness[w], j, frame);
       dominated = expansion_dominates(j, at_witness[w], s, expansion_[k], frame, rho, Kernel::filter_slack);
     }
     if (!dominated) stack_.push_back(stack_[first + k]);
