@@ -44,8 +44,7 @@ int normalizing_exponent(const std::vector<Site>& sites, const std::vector<Site_
 std::vector<Site> scaled_sites(const std::vector<Site>& sites, int exponent) {
   std::vector<Site> scaled(sites.size());
   for (std::size_t i = 0; i < sites.size(); ++i)
-    scaled[i] = {std::ldexp(sites[i].x, -exponent), std::ldexp(sites[i].y, -exponent), std::ldexp(sites[i].z, -exponent),
-                 std::ldexp(sites[i].w, -exponent)};
+    scaled[i] = scaled_by_power_of_two(sites[i], -exponent);
   return scaled;
 }
 

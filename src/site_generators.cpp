@@ -65,7 +65,7 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
   if (family == Site_family::scaled_up || family == Site_family::scaled_down) {
     std::vector<Site> sites = generate_sites(Site_family::uniform, n, seed);
     const int e = family == Site_family::scaled_up ? 300 : -300;
-    for (Site& s : sites) s = {std::ldexp(s.x, e), std::ldexp(s.y, e), std::ldexp(s.z, e), std::ldexp(s.w, e)};
+    for (Site& s : sites) s = scaled_by_power_of_two(s, e);
     return sites;
   }
   if (family == Site_family::lattice_noise) {
@@ -159,7 +159,7 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
         const long choice = random.integer(0, 7);
         if (choice < 2) {
           const int e = static_cast<int>(random.integer(20, 900)) * (choice == 0 ? 1 : -1);
-          s = {std::ldexp(s.x, e), std::ldexp(s.y, e), std::ldexp(s.z, e), std::ldexp(s.w, e)};
+          s = scaled_by_power_of_two(s, e);
         }
         sites.push_back(s);
         break;

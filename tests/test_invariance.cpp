@@ -102,7 +102,7 @@ TEST_CASE("translating by integers, scaling by 2^k, shifting every weight") {
         for (int k : {-40, -1, 3, 200}) {
           CAPTURE(k);
           std::vector<Site> scaled = sites;
-          for (Site& s : scaled) s = {std::ldexp(s.x, k), std::ldexp(s.y, k), std::ldexp(s.z, k), std::ldexp(s.w, k)};
+          for (Site& s : scaled) s = scaled_by_power_of_two(s, k);
           const Diagram d = brute_force_diagram(scaled);
           validate_diagram(d, scaled);
           REQUIRE(d.vertices.size() == original.vertices.size());
