@@ -12,7 +12,9 @@
 #pragma once
 
 #include <array>
+#include <type_traits>
 
+#include "double_with_magnitude.h"
 #include "number_types.h"
 #include "site.h"
 
@@ -41,10 +43,20 @@ struct Relative_site {
   NT rhs;           // |a_m|^2 - b_m^2
 };
 
+// x - y for doubles x and y, in NT.
+template <class NT>
+NT difference_of(double x, double y) {
+  if constexpr (std::is_same_v<NT, Double_with_magnitude>)
+    return Double_with_magnitude::difference(x, y);
+  else
+    return NT(x) - NT(y);
+}
+
 template <class NT>
 Relative_site<NT> relative_site(const Site& origin, const Site& s) {
   Relative_site<NT> r;
-  r.row = {NT(s.x) - NT(origin.x), NT(s.y) - NT(origin.y), NT(s.z) - NT(origin.z), NT(s.w) - NT(origin.w)};
+  r.row = {difference_of<NT>(s.x, origin.x), difference_of<NT>(s.y, origin.y), difference_of<NT>(s.z, origin.z),
+           difference_of<NT>(s.w, origin.w)};
   r.rhs = r.row[0] * r.row[0] + r.row[1] * r.row[1] + r.row[2] * r.row[2] - r.row[3] * r.row[3];
   return r;
 }
@@ -113,6 +125,19 @@ Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
   line.C = lorentz_product(line.Q, line.Q);
   line.discriminant = line.B * line.B - line.A * line.C;
   return line;
+}
+
+// The same line in another number type, element by element.
+template <class To, class NT, class Convert>
+Quadruple_line<To> converted_line(const Quadruple_line<NT>& line, Convert convert) {
+  Quadruple_line<To> result;
+  for (int j = 0; j < 4; ++j) result.n[j] = convert(line.n[j]), result.Q[j] = convert(line.Q[j]);
+  result.pivot = line.pivot;
+  result.A = convert(line.A);
+  result.B = convert(line.B);
+  result.C = convert(line.C);
+  result.discriminant = convert(line.discriminant);
+  return result;
 }
 
 }  // namespace apollonius

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "double_with_magnitude.h"
 #include "filtered_predicate.h"
 #include "line_roots.h"
 
@@ -44,10 +45,12 @@ Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X);
 struct Vertices_of_predicate {
   static constexpr const char* name = "vertices_of";
 
-  // Doubles with running error bounds: a fraction of the cost of intervals, and certain as often.
+  // The line's polynomials in doubles with an a priori bound, the rest with running bounds: a fraction of
+  // the cost of intervals, and certain as often.
   static std::optional<Quadruple_vertices> static_filter(const Quadruple& q) {
     try {
-      return evaluate<Double_with_error>(q);
+      const auto bounded = [](const Double_with_magnitude& x) { return with_error(x); };
+      return vertices_on_line(converted_line<Double_with_error>(quadruple_line<Double_with_magnitude>(q.sites), bounded), q);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
@@ -55,8 +58,12 @@ struct Vertices_of_predicate {
 
   template <class NT>
   static Quadruple_vertices evaluate(const Quadruple& q) {
+    return vertices_on_line(quadruple_line<NT>(q.sites), q);
+  }
+
+  template <class NT>
+  static Quadruple_vertices vertices_on_line(const Quadruple_line<NT>& line, const Quadruple& q) {
     Quadruple_vertices result;
-    const Quadruple_line<NT> line = quadruple_line<NT>(q.sites);
     if (line.pivot < 0) {
       result.rank_deficient = true;
       return result;
