@@ -79,16 +79,22 @@ Witness_expansion expand_witness(const Site& s, const Box_frame& frame) {
 }
 
 void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame) {
+  const double centre[3] = {s.x, s.y, s.z};
+  double square[2][3];  // (y_a - x_a)^2 in box units, for the lower and upper bound of axis a
+  for (int a = 0; a < 3; ++a) {
+    const double below = (frame.box.lo[a] - centre[a]) * frame.unit, above = (frame.box.hi[a] - centre[a]) * frame.unit;
+    square[0][a] = below * below;
+    square[1][a] = above * above;
+  }
   double farthest = 0;
+  bool in_range = true;
   for (int q = 0; q < 8; ++q) {
-    const double dx = ((q & 1 ? frame.box.hi[0] : frame.box.lo[0]) - s.x) * frame.unit;
-    const double dy = ((q & 2 ? frame.box.hi[1] : frame.box.lo[1]) - s.y) * frame.unit;
-    const double dz = ((q & 4 ? frame.box.hi[2] : frame.box.lo[2]) - s.z) * frame.unit;
-    const double squared = dx * dx + dy * dy + dz * dz;
-    e.usable = e.usable && in_error_bound_range(squared);
+    const double squared = square[q & 1][0] + square[q >> 1 & 1][1] + square[q >> 2 & 1][2];
+    in_range = in_range && in_error_bound_range(squared);
     e.corner_distance[q] = std::sqrt(squared);
     farthest = std::max(farthest, e.corner_distance[q]);
   }
+  e.usable = e.usable && in_range;
   e.farthest_corner = farthest;
   e.has_corners = true;
 }

@@ -53,6 +53,7 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
   };
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
   const auto offer = [&](Site_index s, std::size_t b) {
+    if (graph.witnesses[b].size() == kWitnesses) return;  // its witnesses are final: the event would be dropped
     const double* c = graph.frame[b].centre.data();
     const double dx = c[0] - sites[s].x, dy = c[1] - sites[s].y, dz = c[2] - sites[s].z;
     events.push({std::sqrt(dx * dx + dy * dy + dz * dz) - sites[s].w, s, b});  // NaN or inf only delays it
