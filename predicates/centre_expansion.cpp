@@ -70,9 +70,9 @@ double distance_to_box(const Site& s, const Box_frame& frame) {
   return in_error_bound_range(sum) ? std::sqrt(sum) : -1;
 }
 
-Witness_expansion expand_witness(const Site& s, const Box_frame& frame) {
+Witness_expansion expand_witness(const Site& s, const Centre_expansion& at_centre, const Box_frame& frame) {
   Witness_expansion e;
-  static_cast<Centre_expansion&>(e) = expand_at_centre(s, frame);
+  static_cast<Centre_expansion&>(e) = at_centre;
   e.distance_to_box = distance_to_box(s, frame);
   e.usable = e.usable && e.distance_to_box >= 0;
   return e;

@@ -105,7 +105,11 @@ inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) 
   return e;
 }
 
-Witness_expansion expand_witness(const Site& s, const Box_frame& frame);
+// From the witness's centre expansion, when the caller has it already.
+Witness_expansion expand_witness(const Site& s, const Centre_expansion& at_centre, const Box_frame& frame);
+inline Witness_expansion expand_witness(const Site& s, const Box_frame& frame) {
+  return expand_witness(s, expand_at_centre(s, frame), frame);
+}
 void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
 
 // The computed distance from x_s to the box of `frame` (rho_s, box units), or -1 out of range.

@@ -126,7 +126,8 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
     if (at < kWitnesses) witness[at] = k, witnesses = std::min(witnesses + 1, kWitnesses);
   }
   std::array<Witness_expansion, kWitnesses> at_witness;
-  for (std::size_t w = 0; w < witnesses; ++w) at_witness[w] = expand_witness(sites_[stack_[first + witness[w]]], frame);
+  for (std::size_t w = 0; w < witnesses; ++w)
+    at_witness[w] = expand_witness(sites_[stack_[first + witness[w]]], expansion_[witness[w]], frame);
 
   for (std::size_t k = 0; k < count; ++k) {
     const Site& s = sites_[stack_[first + k]];
@@ -168,28 +169,29 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
       for (std::size_t c = b + 1; c < k; ++c)
         for (std::size_t d = c + 1; d < k; ++d) {
           const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
+          const auto keep_located = [&](const Quadruple_vertices& vertices) {
+            for (const Vertex& v : vertices.vertices) {
+              if (!Kernel::in_box(v, box, closed_above)) continue;
+              // The candidates include every owner of the vertex: its tie set is among them.
+              tie_.assign(quadruple.begin(), quadruple.end());
+              bool closer = false;
+              for (std::size_t o = 0; o < k && !closer; ++o) {
+                if (o == a || o == b || o == c || o == d) continue;
+                const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
+                closer = sign == Sign::NEGATIVE;
+                if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
+              }
+              if (closer) continue;
+              std::sort(tie_.begin(), tie_.end());
+              append_unique<Kernel>(out, leaf_start, {tie_, v});
+            }
+          };
           // A leaf of many candidates (an exact tie of many sites, at the double resolution) is streamed:
           // caching its quadruples would hold them all.
-          const Quadruple_vertices streamed = k > kStagnantCandidates
-                                                  ? Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_))
-                                                  : Quadruple_vertices{};
-          const Quadruple_vertices& vertices =
-              k > kStagnantCandidates ? streamed : cache_.vertices_of_quadruple(quadruple, sites_);
-          for (const Vertex& v : vertices.vertices) {
-            if (!Kernel::in_box(v, box, closed_above)) continue;
-            // The candidates include every owner of the vertex: its tie set is among them.
-            tie_.assign(quadruple.begin(), quadruple.end());
-            bool closer = false;
-            for (std::size_t o = 0; o < k && !closer; ++o) {
-              if (o == a || o == b || o == c || o == d) continue;
-              const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
-              closer = sign == Sign::NEGATIVE;
-              if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
-            }
-            if (closer) continue;
-            std::sort(tie_.begin(), tie_.end());
-            append_unique<Kernel>(out, leaf_start, {tie_, v});
-          }
+          if (k > kStagnantCandidates)
+            keep_located(Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
+          else
+            keep_located(cache_.vertices_of_quadruple(quadruple, sites_));
         }
 }
 

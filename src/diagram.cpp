@@ -19,7 +19,9 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   }
   // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.
   std::sort(diagram.vertices.begin(), diagram.vertices.end(), [](const Diagram_vertex& u, const Diagram_vertex& v) {
-    if (u.tie_set != v.tie_set) return u.tie_set < v.tie_set;
+    // One pass over the tie sets (lexicographic, a prefix first).
+    const auto [p, q] = std::mismatch(u.tie_set.begin(), u.tie_set.end(), v.tie_set.begin(), v.tie_set.end());
+    if (p != u.tie_set.end() || q != v.tie_set.end()) return q != v.tie_set.end() && (p == u.tie_set.end() || *p < *q);
     if (u.rounded != v.rounded) return u.rounded < v.rounded;
     return Kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
   });
