@@ -5,9 +5,12 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -18,6 +21,7 @@
 #include "io/json_value.h"
 #include "io/read_sites.h"
 #include "io/read_structure.h"
+#include "io/round_trip.h"
 #include "io/write_vertices.h"
 #include "vertices_of.h"
 
@@ -131,6 +135,43 @@ const Site pept_first{4.868, -17.809, 25.188, 1.55};
 const Site pept_second{3.984, -16.723, 25.698, 1.70};
 
 }  // namespace
+
+// write_round_trip's integer path against std::to_chars (printf's %.17g) on doubles of every kind: random
+// bit patterns, random values across the fast path's range and its edges, short decimals, integers,
+// powers of ten and their neighbours, and values whose 18th digit is an exact tie.
+TEST_CASE("round_trip prints every double as %.17g does") {
+  std::mt19937_64 random(17);
+  std::size_t checked = 0;
+  const auto check = [&](double x) {
+    char expected[32], actual[32];
+    const std::string reference(expected, std::to_chars(expected, expected + 32, x, std::chars_format::general, 17).ptr);
+    const std::string printed(actual, write_round_trip(actual, x));
+    CAPTURE(x);
+    CHECK(printed == reference);
+    ++checked;
+  };
+  for (int i = 0; i < 300000; ++i) {
+    const std::uint64_t bits = random();
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    check(x);
+    check(std::ldexp(std::uniform_real_distribution<double>(0.5, 1)(random), static_cast<int>(random() % 120) - 60));
+    check(-std::uniform_real_distribution<double>(-100, 100)(random));
+    check(static_cast<double>(random() % 100000000000000000ull));
+    check(static_cast<double>(random() % 1000000) / 1000);  // short decimals
+    check(std::ldexp(static_cast<double>(random() % (1ull << 53)), -static_cast<int>(random() % 110)));  // dyadic: exact ties
+  }
+  for (int k = -20; k <= 20; ++k) {
+    const double p = std::pow(10.0, k);
+    for (double x : {p, std::nextafter(p, 0.0), std::nextafter(p, 1e300), -p, 0.5 * p, 5 * p, 9.9999999999999999 * p})
+      check(x);
+  }
+  for (double x : {0.0, -0.0, 1.0, 1e-14, 1e17, 0.1, 0.3, 2.5, 1e300, 5e-324, -2.2250738585072014e-308,
+                   std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::quiet_NaN()})
+    check(x);
+  CHECK(checked > 1800000);
+}
 
 TEST_CASE("Input_error names the file, the line if any, and the reason") {
   CHECK(std::string(Input_error("a.txt", 3, "bad").what()) == "a.txt:3: bad");

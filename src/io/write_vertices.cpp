@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io/json_output.h"
+#include "io/round_trip.h"
 
 namespace apollonius {
 
@@ -16,7 +17,7 @@ void write_vertices_text(std::ostream& out, const Diagram& diagram) {
       text += ' ';
     }
     for (int j = 0; j < 4; ++j) {
-      text += round_trip(v.rounded[j]);
+      text.append(number, write_round_trip(number, v.rounded[j]));
       text += j < 3 ? ' ' : '\n';
     }
     if (text.size() > (1u << 16)) {  // written in chunks
