@@ -12,7 +12,7 @@ namespace apollonius {
 
 namespace round_trip_detail {
 
-using Wide = unsigned __int128;
+__extension__ typedef unsigned __int128 Wide;  // GCC and clang; __extension__ keeps -Wpedantic quiet
 
 constexpr std::uint64_t power_of_ten(int k) {
   std::uint64_t p = 1;
