@@ -35,8 +35,8 @@ inline Wide scaled_rounded(std::uint64_t m, int e, int k) {
 
 }  // namespace round_trip_detail
 
-// Writes value as printf's "%.17g" does and returns the end. 17 significant digits identify every finite
-// double. Values in [1e-14, 1e17) take an exact integer path: the 17 digits are m 2^e 10^(16 - d) rounded
+// Writes value as printf's "%.17g" does into out (room for 32 chars) and returns the end. 17 significant
+// digits identify every finite double. Values in [1e-14, 1e17) take an exact integer path: the 17 digits are m 2^e 10^(16 - d) rounded
 // to nearest (ties to even, as printf rounds the exact binary value) in 128-bit arithmetic, d the decimal
 // exponent. Others, zeros and non-finite values go to std::to_chars, which prints as printf does.
 inline char* write_round_trip(char* out, double value) {
@@ -65,7 +65,9 @@ inline char* write_round_trip(char* out, double value) {
   int significant = 17;  // "%g" drops trailing zeros of the fraction
   while (significant > 1 && text[significant - 1] == '0') --significant;
   if (value < 0) *out++ = '-';
-  if (d < -4 || d >= 17) {  // scientific: D.DDDe-XX (never e+: d < 17 here)
+  // d <= 16 here: the doubles of [1e16, 1e17) are integers of 17 digits, so rounding never carries to 1e17,
+  // and %g's scientific form (exponent < -4 or >= 17) only ever has a negative exponent.
+  if (d < -4) {  // scientific: D.DDDe-XX
     *out++ = text[0];
     if (significant > 1) {
       *out++ = '.';
