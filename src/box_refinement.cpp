@@ -147,11 +147,16 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
 template <class Kernel>
 bool Box_refinement<Kernel>::tiny_against_candidates(const Axis_box& box, std::size_t first) const {
   Rounding_guard guard;
+  // In box units (times a power of two): in input units the squared kTinyBox half-diagonals of a box wider
+  // than about 1e152 overflowed, inf - inf settled nothing, and such boxes refined without end
+  // (tests/data/regression/octree_tiny_box_test_overflowed_beyond_1e152.balls). A site so far that its
+  // square overflows gets an infinite lower bound: it is far.
+  const Interval unit(frame_of(box).unit);
   Interval scaled_half_diagonal_squared(0);
   for (int a = 0; a < 3; ++a)
-    scaled_half_diagonal_squared += CGAL::square((Interval(box.hi[a]) - Interval(box.lo[a])) * Interval(kTinyBox / 2));
+    scaled_half_diagonal_squared += CGAL::square((Interval(box.hi[a]) - Interval(box.lo[a])) * unit * Interval(kTinyBox / 2));
   return std::all_of(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end(), [&](Site_index s) {
-    return (squared_distance_to_box<Interval>(sites_[s], box) - scaled_half_diagonal_squared).inf() > 0;
+    return (squared_distance_to_box<Interval>(sites_[s], box, unit) - scaled_half_diagonal_squared).inf() > 0;
   });
 }
 

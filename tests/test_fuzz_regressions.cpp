@@ -90,3 +90,12 @@ TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {
   validate_diagram(octree, sites);
   CHECK(octree.vertices.size() == 870);
 }
+
+// fuzz_vertices: seven small balls with x_i - w_i = 0 for all of them tie to first order seen from far
+// along -x, and one ball 1e240 away makes the root box that large. The test that settles stagnant boxes tiny
+// against their candidates squared box sizes beyond 1e152 to inf, so those boxes never settled and refined
+// for more than ten minutes. About 500 boxes per level of the 800 from 1e240 down to the balls remain.
+TEST_CASE("regression: octree_tiny_box_test_overflowed_beyond_1e152") {
+  const Octree_statistics statistics = check_octree_equals_brute_force("octree_tiny_box_test_overflowed_beyond_1e152.balls");
+  CHECK(statistics.boxes < 1000000);
+}
