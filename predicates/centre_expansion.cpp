@@ -70,14 +70,6 @@ double distance_to_box(const Site& s, const Box_frame& frame) {
   return in_error_bound_range(sum) ? std::sqrt(sum) : -1;
 }
 
-Witness_expansion expand_witness(const Site& s, const Centre_expansion& at_centre, const Box_frame& frame) {
-  Witness_expansion e;
-  static_cast<Centre_expansion&>(e) = at_centre;
-  e.distance_to_box = distance_to_box(s, frame);
-  e.usable = e.usable && e.distance_to_box >= 0;
-  return e;
-}
-
 void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame) {
   const double centre[3] = {s.x, s.y, s.z};
   double square[2][3];  // (y_a - x_a)^2 in box units, for the lower and upper bound of axis a
@@ -86,16 +78,15 @@ void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame) {
     square[0][a] = below * below;
     square[1][a] = above * above;
   }
-  double farthest = 0;
-  bool in_range = true;
-  for (int q = 0; q < 8; ++q) {
-    const double squared = square[q & 1][0] + square[q >> 1 & 1][1] + square[q >> 2 & 1][2];
-    in_range = in_range && in_error_bound_range(squared);
-    e.corner_distance[q] = std::sqrt(squared);
-    farthest = std::max(farthest, e.corner_distance[q]);
-  }
+  std::array<double, 8> squared;
+  for (int q = 0; q < 8; ++q) squared[q] = square[q & 1][0] + square[q >> 1 & 1][1] + square[q >> 2 & 1][2];
+  const auto [least, most] = std::minmax_element(squared.begin(), squared.end());
+  // Checked per corner only when some corner is 0 or out of range (or NaN).
+  const bool in_range = (*least >= kTinySquare && *most <= kHugeSquare) ||
+                        std::all_of(squared.begin(), squared.end(), in_error_bound_range);
+  for (int q = 0; q < 8; ++q) e.corner_distance[q] = std::sqrt(squared[q]);
   e.usable = e.usable && in_range;
-  e.farthest_corner = farthest;
+  e.farthest_corner = std::sqrt(*most);
   e.has_corners = true;
 }
 
@@ -152,7 +143,8 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
 
   const std::array<double, 3>& p = pair.towards_j;
   const double separation = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);  // |p|
-  const double rho_j = at_j.distance_to_box;
+  const double rho_j = distance_to_box(j, frame);
+  if (rho_j < 0) return false;
   const double rho_sum = rho_i + rho_j;
   const double curvature =
       rho_i > 0 && rho_j > 0 ? frame.reach_squared / 2 * (separation / (rho_i * rho_j) + 2 * separation / (rho_j * rho_sum))

@@ -25,7 +25,9 @@
 //          |c - x_i| - |c - x_j| = (x_j - x_i).((c - x_i) + (c - x_j)) / (|c - x_i| + |c - x_j|) =: q,
 //          u_i - u_j = ((x_j - x_i) - u_j q) / |c - x_i| = ((x_j - x_i) - u_i q) / |c - x_j|.
 //
-// Both are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
+// Before both, the Lipschitz test: |grad d_k| <= 1, so f(c) > 2 reach >= 2 |x - c| gives f > 0 on the box.
+//
+// All are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
 // only ever certify; a site they cannot remove stays a candidate. The `slack` argument multiplies those
 // bounds: 1 on the certified path, 0 on the floating path (kernels.h).
 //
@@ -70,11 +72,10 @@ struct Centre_expansion {
   bool usable;                     // every magnitude lies where the error bounds hold
 };
 
-// A witness also needs its distance to the box, rho_j, and |y - x_j| at the corners (corner_distance[q],
-// corner q having the upper bound on axis a when bit a of q is set), computed when first needed
-// (add_corners): test (A) uses them when the witness is no larger than the candidate.
+// A witness also needs |y - x_j| at the corners (corner_distance[q], corner q having the upper bound on
+// axis a when bit a of q is set), computed when first needed (add_corners): test (A) uses them when the
+// witness is no larger than the candidate.
 struct Witness_expansion : Centre_expansion {
-  double distance_to_box;  // 0 when x_j lies in the box
   bool has_corners = false;
   std::array<double, 8> corner_distance;
   double farthest_corner;  // the largest corner_distance
@@ -106,11 +107,19 @@ inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) 
 }
 
 // From the witness's centre expansion, when the caller has it already.
-Witness_expansion expand_witness(const Site& s, const Centre_expansion& at_centre, const Box_frame& frame);
-inline Witness_expansion expand_witness(const Site& s, const Box_frame& frame) {
-  return expand_witness(s, expand_at_centre(s, frame), frame);
+inline Witness_expansion expand_witness(const Centre_expansion& at_centre) {
+  Witness_expansion e;
+  static_cast<Centre_expansion&>(e) = at_centre;
+  return e;
 }
 void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame);
+
+// What the tests compute of a candidate i on a box once for all its witnesses, when first needed.
+struct Candidate_on_box {
+  double rho = -1;                       // distance_to_box(i, frame) once computed, for (B)
+  bool has_corner_squares = false;
+  std::array<std::array<double, 3>, 2> corner_square{};  // (y_a - x_ia)^2 for the lower and upper bound of axis a, for (A)
+};
 
 // The computed distance from x_s to the box of `frame` (rho_s, box units), or -1 out of range.
 double distance_to_box(const Site& s, const Box_frame& frame);
@@ -118,15 +127,18 @@ double distance_to_box(const Site& s, const Box_frame& frame);
 // Test (A). The margins cover the rounding errors of the corner values (ERROR_BOUNDS.md "Centre
 // expansion", item 3). Precondition: at_j.has_corners if j.w <= i.w.
 inline bool corners_dominate(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
-                             const Box_frame& frame, double slack) {
+                             Candidate_on_box& on_box, const Box_frame& frame, double slack) {
   if (!at_i.usable || !at_j.usable) return false;
   const double w = (j.w - i.w) * frame.unit;  // W, of the sign of j.w - i.w
-  double square_i[2][3];  // (y_a - x_ia)^2 for the lower and upper bound of axis a
-  for (int a = 0; a < 3; ++a)
-    for (int side = 0; side < 2; ++side) {
-      const double e = frame.corner_offset[side][a] + at_i.offset[a];
-      square_i[side][a] = e * e;
-    }
+  if (!on_box.has_corner_squares) {
+    for (int a = 0; a < 3; ++a)
+      for (int side = 0; side < 2; ++side) {
+        const double e = frame.corner_offset[side][a] + at_i.offset[a];
+        on_box.corner_square[side][a] = e * e;
+      }
+    on_box.has_corner_squares = true;
+  }
+  const auto& square_i = on_box.corner_square;
   const double outer_i = at_i.magnitude + frame.reach;
   if (j.w <= i.w) {
     const double outer_j = at_j.farthest_corner - w;
@@ -172,23 +184,28 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
                    double rho_i, const Box_frame& frame, double slack);
 
 // True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
-// at_j.has_corners if j.w <= i.w. `rho_i` holds distance_to_box(i, frame) once computed (negative before), for (B).
+// at_j.has_corners if j.w <= i.w. `on_box` is i's, shared by all its witnesses on this box.
 inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                const Centre_expansion& at_i, const Box_frame& frame, double& rho_i, double slack) {
+                                const Centre_expansion& at_i, Candidate_on_box& on_box, const Box_frame& frame,
+                                double slack) {
   if (!at_i.usable || !at_j.usable) return false;
   const double gap = at_i.weighted - at_j.weighted;
+  const double gap_error = slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude);
   // 8u (magnitude_i + magnitude_j) bounds the error of gap (ERROR_BOUNDS.md item 2): below it, i is
   // certainly closer at the centre, so not dominated.
-  if (!(gap > -slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude))) return false;
-  if (gap > 0 && corners_dominate(j, at_j, i, at_i, frame, slack)) return true;
+  if (!(gap > -gap_error)) return false;
+  // d_i - d_j is 2-Lipschitz and reach >= |x - c| on the box: f(c) > 2 reach decides without the corners
+  // (ERROR_BOUNDS.md, "Centre expansion", item 7).
+  if (gap - 2 * frame.reach > 1.125 * gap_error) return true;
+  if (gap > 0 && corners_dominate(j, at_j, i, at_i, on_box, frame, slack)) return true;
   // (B) needs f(c) > sum_a |g_a| h_a. Rejected here only when the plain doubles show that certainly fails
   // (ERROR_BOUNDS.md, "Centre expansion", item 5); far from both sites they cannot, and (B) decides.
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
   if (!(gap - linear > -slack * 16 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude + 2 * frame.reach + linear)))
     return false;
-  if (rho_i < 0) rho_i = distance_to_box(i, frame);
-  return far_dominates(j, at_j, i, at_i, rho_i, frame, slack);
+  if (on_box.rho < 0) on_box.rho = distance_to_box(i, frame);
+  return far_dominates(j, at_j, i, at_i, on_box.rho, frame, slack);
 }
 
 }  // namespace apollonius

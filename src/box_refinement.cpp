@@ -108,39 +108,42 @@ template <class Kernel>
 void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t first, std::size_t end) {
   const Box_frame frame = frame_of(box);
   const std::size_t count = end - first;
+  stack_.reserve(end + count);  // the kept candidates are appended while `candidate` is read
+  const Site_index* candidate = stack_.data() + first;
+  const Site* sites = sites_.data();
   expansion_.resize(count);
-  for (std::size_t k = 0; k < count; ++k) expansion_[k] = expand_at_centre(sites_[stack_[first + k]], frame);
+  Centre_expansion* expansion = expansion_.data();
+  for (std::size_t k = 0; k < count; ++k) expansion[k] = expand_at_centre(sites[candidate[k]], frame);
 
   // The witnesses: the usable candidates of least d at the centre, ascending. Only a witness closer at
   // the centre can dominate a site on the box.
   std::array<std::size_t, kWitnesses> witness;
   std::size_t witnesses = 0;
   const auto nearer = [&](std::size_t k, std::size_t l) {
-    return nearer_at_centre(sites_[stack_[first + k]], expansion_[k], sites_[stack_[first + l]], expansion_[l]);
+    return nearer_at_centre(sites[candidate[k]], expansion[k], sites[candidate[l]], expansion[l]);
   };
   for (std::size_t k = 0; k < count; ++k) {
-    if (!expansion_[k].usable) continue;
+    if (!expansion[k].usable) continue;
     std::size_t at = std::min(witnesses, kWitnesses);
     for (; at > 0 && nearer(k, witness[at - 1]); --at)
       if (at < kWitnesses) witness[at] = witness[at - 1];
     if (at < kWitnesses) witness[at] = k, witnesses = std::min(witnesses + 1, kWitnesses);
   }
   std::array<Witness_expansion, kWitnesses> at_witness;
-  for (std::size_t w = 0; w < witnesses; ++w)
-    at_witness[w] = expand_witness(sites_[stack_[first + witness[w]]], expansion_[witness[w]], frame);
+  for (std::size_t w = 0; w < witnesses; ++w) at_witness[w] = expand_witness(expansion[witness[w]]);
 
   for (std::size_t k = 0; k < count; ++k) {
-    const Site& s = sites_[stack_[first + k]];
+    const Site& s = sites[candidate[k]];
     bool dominated = false;
-    double rho = -1;  // computed by the second stage, once
+    Candidate_on_box on_box;
     // The witnesses before k in that order.
     for (std::size_t w = 0; w < witnesses && !dominated && witness[w] != k; ++w) {
-      const Site& j = sites_[stack_[first + witness[w]]];
+      const Site& j = sites[candidate[witness[w]]];
       // Test (A) needs the witness's corner distances against a candidate no smaller than it.
       if (!at_witness[w].has_corners && j.w <= s.w) add_corners(at_witness[w], j, frame);
-      dominated = expansion_dominates(j, at_witness[w], s, expansion_[k], frame, rho, Kernel::filter_slack);
+      dominated = expansion_dominates(j, at_witness[w], s, expansion[k], on_box, frame, Kernel::filter_slack);
     }
-    if (!dominated) stack_.push_back(stack_[first + k]);
+    if (!dominated) stack_.push_back(candidate[k]);
   }
 }
 

@@ -66,7 +66,7 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
     if (held.size() == kWitnesses ||
         std::any_of(held.begin(), held.end(), [&](const auto& w) { return w.first == e.site; }))
       continue;
-    held.emplace_back(e.site, expand_witness(sites[e.site], graph.frame[e.box]));
+    held.emplace_back(e.site, expand_witness(expand_at_centre(sites[e.site], graph.frame[e.box])));
     add_corners(held.back().second, sites[e.site], graph.frame[e.box]);
     for (std::size_t k = graph.neighbour_start[e.box]; k < graph.neighbour_start[e.box + 1]; ++k)
       offer(e.site, graph.neighbours[k]);
@@ -78,9 +78,9 @@ bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size
   const auto& held = graph.witnesses[b];
   if (held.empty()) return false;
   const Centre_expansion at_s = expand_at_centre(sites[s], graph.frame[b]);
-  double rho = -1;
+  Candidate_on_box on_box;
   for (const auto& [w, at_w] : held)
-    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, graph.frame[b], rho, slack)) return true;
+    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, on_box, graph.frame[b], slack)) return true;
   return false;
 }
 

@@ -60,11 +60,11 @@ struct Outcome {
 Outcome check_pair(const Axis_box& box, const Site& i, const Site& j, Random& random) {
   const Box_frame frame = frame_of(box);
   const Centre_expansion at_i = expand_at_centre(i, frame);
-  Witness_expansion at_j = expand_witness(j, frame);
+  Witness_expansion at_j = expand_witness(expand_at_centre(j, frame));
   add_corners(at_j, j, frame);
-  double rho = -1;
+  Candidate_on_box on_box;
   Outcome outcome;
-  outcome.dominated = expansion_dominates(j, at_j, i, at_i, frame, rho, 1.0);
+  outcome.dominated = expansion_dominates(j, at_j, i, at_i, on_box, frame, 1.0);
   if (!outcome.dominated) return outcome;
   for (int q = 0; q < 8 + 1 + 24; ++q) {
     std::array<double, 3> x;
