@@ -1,5 +1,4 @@
 // The double nearest to an exact root number (ties to even): the printed coordinates of a vertex.
-// The value is only ever output; nothing is decided from it.
 #pragma once
 
 #include "root_sign.h"

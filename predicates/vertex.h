@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <type_traits>
 
 #include "double_with_error.h"
@@ -68,11 +69,15 @@ class Vertex {
   // Interval enclosure of the vertex centre (x, y, z) and r.
   std::array<Interval, 4> point_interval() const;
 
+  // x, y, z, r correctly rounded (vertex_rounding.h), computed on first use.
+  const std::array<double, 4>& rounded() const;
+
  private:
   Quadruple quadruple_;
   Root root_;
   Vertex_coordinates<Interval> box_;
   mutable std::shared_ptr<const Vertex_coordinates<Exact>> exact_;  // computed on first use
+  mutable std::optional<std::array<double, 4>> rounded_;             // computed on first use
 };
 
 template <>

@@ -3,8 +3,11 @@
 // box). Leaves of a subdivision are half-open, so every vertex belongs to exactly one of them.
 #pragma once
 
+#include <optional>
+
 #include "axis_box.h"
 #include "compare_vertices.h"
+#include "vertex_rounding.h"
 
 namespace apollonius {
 
@@ -13,15 +16,45 @@ inline Sign compare_numbers(const Root_number<Exact>& x, double y) {
   return compare(x, Root_number<Exact>{Exact(y), Exact(0), Exact(0), Exact(1)});
 }
 
+// The vertex's coordinates against doubles, in NT. Exact compares the correctly rounded coordinate first:
+// rounding to nearest is monotone and leaves doubles as they are, so round(x) < y gives x < y and
+// round(x) > y gives x > y. Only round(x) = y needs x in Q(sqrt d), whose arithmetic is slow on sites
+// spread over many binades (fuzz inputs spent seconds there, one box bound at a time).
+template <class NT>
+class Coordinates_against_doubles {
+ public:
+  explicit Coordinates_against_doubles(const Vertex& v) : point_(absolute_point<NT>(v)) {}
+  Sign compare(int axis, double y) const { return compare_numbers(point_[axis], y); }
+
+ private:
+  decltype(absolute_point<NT>(std::declval<const Vertex&>())) point_;
+};
+
+template <>
+class Coordinates_against_doubles<Exact> {
+ public:
+  explicit Coordinates_against_doubles(const Vertex& v) : vertex_(v) {}
+  Sign compare(int axis, double y) {
+    const double rounded = vertex_.rounded()[axis];
+    if (rounded != y) return rounded < y ? Sign::NEGATIVE : Sign::POSITIVE;
+    if (!exact_) exact_ = exact_point(vertex_);
+    return compare_numbers((*exact_)[axis], y);
+  }
+
+ private:
+  const Vertex& vertex_;
+  std::optional<std::array<Root_number<Exact>, 4>> exact_;
+};
+
 struct Vertex_in_box_predicate {
   static constexpr const char* name = "vertex_in_box";
 
   template <class NT>
   static bool evaluate(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
-    const auto p = absolute_point<NT>(v);
+    Coordinates_against_doubles<NT> p(v);
     for (int a = 0; a < 3; ++a) {
-      if (compare_numbers(p[a], box.lo[a]) == Sign::NEGATIVE) return false;
-      const Sign above = compare_numbers(p[a], box.hi[a]);
+      if (p.compare(a, box.lo[a]) == Sign::NEGATIVE) return false;
+      const Sign above = p.compare(a, box.hi[a]);
       if (above == Sign::POSITIVE || (above == Sign::ZERO && !closed_above[a])) return false;
     }
     return true;

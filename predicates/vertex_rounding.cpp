@@ -60,6 +60,11 @@ std::array<std::optional<double>, 4> certified_roundings(const Vertex& v) {
   }
 }
 
+const std::array<double, 4>& Vertex::rounded() const {
+  if (!rounded_) rounded_ = rounded_coordinates(*this);
+  return *rounded_;
+}
+
 std::array<double, 4> rounded_coordinates(const Vertex& v) {
   const std::array<std::optional<double>, 4> fast = certified_roundings(v);
   std::array<double, 4> rounded;

@@ -1,5 +1,6 @@
 // The printed coordinates of a vertex (SPEC section 4): the correctly rounded doubles of its exact x, y,
-// z and r. Nothing is decided from them.
+// z and r. Rounding to nearest is monotone and leaves doubles as they are, so they also order the vertex
+// exactly against any double they differ from (vertex_in_box.h).
 #pragma once
 
 #include <array>

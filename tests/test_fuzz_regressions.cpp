@@ -99,3 +99,11 @@ TEST_CASE("regression: octree_tiny_box_test_overflowed_beyond_1e152") {
   const Octree_statistics statistics = check_octree_equals_brute_force("octree_tiny_box_test_overflowed_beyond_1e152.balls");
   CHECK(statistics.boxes < 1000000);
 }
+
+// fuzz_vertices: a dozen sites with subnormal coordinates and some near 1e50. The intervals could not place
+// their vertices against the many small boxes near them, and vertex_in_box's exact stage compared in
+// Q(sqrt d) each time: 5.5 s and 6.6 s. It now compares the correctly rounded coordinates first (0.7 s, 1.2 s).
+TEST_CASE("regression: octree_exact_in_box_slow_for_subnormal_sites") {
+  check_octree_equals_brute_force("octree_exact_in_box_slow_for_subnormal_sites.balls");
+  check_octree_equals_brute_force("octree_exact_in_box_slow_for_subnormal_sites_2.balls");
+}
