@@ -5,7 +5,6 @@
 
 #include <array>
 #include <memory>
-#include <optional>
 #include <type_traits>
 
 #include "double_with_error.h"
@@ -77,7 +76,7 @@ class Vertex {
   Root root_;
   Vertex_coordinates<Interval> box_;
   mutable std::shared_ptr<const Vertex_coordinates<Exact>> exact_;  // computed on first use
-  mutable std::optional<std::array<double, 4>> rounded_;             // computed on first use
+  mutable std::shared_ptr<const std::array<double, 4>> rounded_;     // computed on first use
 };
 
 template <>

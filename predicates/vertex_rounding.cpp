@@ -61,7 +61,7 @@ std::array<std::optional<double>, 4> certified_roundings(const Vertex& v) {
 }
 
 const std::array<double, 4>& Vertex::rounded() const {
-  if (!rounded_) rounded_ = rounded_coordinates(*this);
+  if (!rounded_) rounded_ = std::make_shared<const std::array<double, 4>>(rounded_coordinates(*this));
   return *rounded_;
 }
 
