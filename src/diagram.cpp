@@ -1,6 +1,7 @@
 #include "diagram.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "kernels.h"
 
@@ -12,19 +13,26 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   Diagram diagram;
   diagram.site_count = site_count;
   diagram.hidden = std::move(hidden);
-  diagram.vertices.reserve(vertices.size());
+  std::vector<Diagram_vertex> found;
+  found.reserve(vertices.size());
   for (auto& [tie_set, vertex] : vertices) {
     const std::array<double, 4> rounded = Kernel::printed_coordinates(vertex);
-    diagram.vertices.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
+    found.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
   }
   // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.
-  std::sort(diagram.vertices.begin(), diagram.vertices.end(), [](const Diagram_vertex& u, const Diagram_vertex& v) {
+  // Sorted by index, then moved once: a Diagram_vertex is large.
+  std::vector<std::size_t> order(found.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const Diagram_vertex &u = found[a], &v = found[b];
     // One pass over the tie sets (lexicographic, a prefix first).
     const auto [p, q] = std::mismatch(u.tie_set.begin(), u.tie_set.end(), v.tie_set.begin(), v.tie_set.end());
     if (p != u.tie_set.end() || q != v.tie_set.end()) return q != v.tie_set.end() && (p == u.tie_set.end() || *p < *q);
     if (u.rounded != v.rounded) return u.rounded < v.rounded;
     return Kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
   });
+  diagram.vertices.reserve(found.size());
+  for (std::size_t k : order) diagram.vertices.push_back(std::move(found[k]));
 
   std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);
   for (const Diagram_vertex& v : diagram.vertices)
