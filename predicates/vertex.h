@@ -70,6 +70,8 @@ class Vertex {
 
   // x, y, z, r correctly rounded (vertex_rounding.h), computed on first use.
   const std::array<double, 4>& rounded() const;
+  // The same if computed already, else null.
+  const std::array<double, 4>* rounded_if_computed() const { return rounded_.get(); }
 
  private:
   Quadruple quadruple_;

@@ -49,6 +49,20 @@ class Coordinates_against_doubles<Exact> {
 struct Vertex_in_box_predicate {
   static constexpr const char* name = "vertex_in_box";
 
+  // Once an exact stage has rounded the vertex, its rounded point decides every bound it differs from, with
+  // no interval (whose failure costs an exception: a fuzz input spent seconds throwing them).
+  static std::optional<bool> static_filter(const Vertex& v, const Axis_box& box, const std::array<bool, 3>&) {
+    const std::array<double, 4>* rounded = v.rounded_if_computed();
+    if (rounded == nullptr) return std::nullopt;
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+      const double x = (*rounded)[a];
+      if (x == box.lo[a] || x == box.hi[a]) return std::nullopt;
+      inside = inside && box.lo[a] < x && x < box.hi[a];
+    }
+    return inside;
+  }
+
   template <class NT>
   static bool evaluate(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
     Coordinates_against_doubles<NT> p(v);

@@ -1,5 +1,5 @@
 // vertex_in_box's exact stage decides by the correctly rounded coordinates and falls back to Q(sqrt d) only
-// when one equals the box bound. Checked against the comparison in Q(sqrt d) alone, for boxes whose bounds
+// when one equals the box bound; once they are computed, its static filter decides by them too. Checked against the comparison in Q(sqrt d) alone, for boxes whose bounds
 // sit on, next to and a few ulps from every coordinate of every vertex of every generator family, and of
 // the regression inputs that made the exact stage slow.
 #include <doctest/doctest.h>
@@ -74,6 +74,8 @@ void check_vertex(const Vertex& v, Tally& tally) {
           CAPTURE(near[l]);
           CAPTURE(near[h]);
           CHECK(Vertex_in_box_predicate::evaluate<Exact>(fresh, box, closed_above) == expected);
+          // The filtered predicate: its static filter answers by the rounded point, now computed.
+          CHECK(vertex_in_box(fresh, box, closed_above) == expected);
           ++tally.boxes;
           tally.inside += expected;
           tally.on_bound += compare_numbers(exact[axis], near[l]) == Sign::ZERO ||
