@@ -52,8 +52,9 @@ Vertex_coordinates<NT> coordinates_on_line(const Quadruple_line<NT>& line, const
   using std::sqrt;
   using CGAL::sqrt;
   const NT l = (lambda.a + lambda.b * sqrt(lambda.d)) / lambda.denominator;
+  const NT reciprocal = NT(1) / line.n[line.pivot];  // one division, not four: they dominated this function
   Vertex_coordinates<NT> V;
-  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) / line.n[line.pivot];
+  for (int j = 0; j < 4; ++j) V.scaled[j] = (line.Q[j] + l * line.n[j]) * reciprocal;
   return V;
 }
 
