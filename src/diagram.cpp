@@ -13,26 +13,24 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   Diagram diagram;
   diagram.site_count = site_count;
   diagram.hidden = std::move(hidden);
-  std::vector<Diagram_vertex> found;
-  found.reserve(vertices.size());
-  for (auto& [tie_set, vertex] : vertices) {
-    const std::array<double, 4> rounded = Kernel::printed_coordinates(vertex);
-    found.push_back(Diagram_vertex{std::move(tie_set), std::move(vertex), rounded});
-  }
+  std::vector<std::array<double, 4>> rounded(vertices.size());
+  for (std::size_t k = 0; k < vertices.size(); ++k) rounded[k] = Kernel::printed_coordinates(vertices[k].second);
   // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.
-  // Sorted by index, then moved once: a Diagram_vertex is large.
-  std::vector<std::size_t> order(found.size());
+  // Sorted by index, then each vertex moved once: they are large, and one copy of them at a time is enough.
+  std::vector<std::size_t> order(vertices.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const Diagram_vertex &u = found[a], &v = found[b];
+    const std::vector<Site_index>&u = vertices[a].first, &v = vertices[b].first;
     // One pass over the tie sets (lexicographic, a prefix first).
-    const auto [p, q] = std::mismatch(u.tie_set.begin(), u.tie_set.end(), v.tie_set.begin(), v.tie_set.end());
-    if (p != u.tie_set.end() || q != v.tie_set.end()) return q != v.tie_set.end() && (p == u.tie_set.end() || *p < *q);
-    if (u.rounded != v.rounded) return u.rounded < v.rounded;
-    return Kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
+    const auto [p, q] = std::mismatch(u.begin(), u.end(), v.begin(), v.end());
+    if (p != u.end() || q != v.end()) return q != v.end() && (p == u.end() || *p < *q);
+    if (rounded[a] != rounded[b]) return rounded[a] < rounded[b];
+    return Kernel::compare(vertices[a].second, vertices[b].second) == Sign::NEGATIVE;
   });
-  diagram.vertices.reserve(found.size());
-  for (std::size_t k : order) diagram.vertices.push_back(std::move(found[k]));
+  diagram.vertices.reserve(vertices.size());
+  for (std::size_t k : order)
+    diagram.vertices.push_back(Diagram_vertex{std::move(vertices[k].first), std::move(vertices[k].second), rounded[k]});
+  std::vector<std::pair<std::vector<Site_index>, Vertex>>().swap(vertices);
 
   std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);
   for (const Diagram_vertex& v : diagram.vertices)

@@ -91,7 +91,13 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.far_field_quadruples = far.quadruples;
     statistics.far_field_seconds = timer.lap();
   });
-  for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(vertices));
+  std::size_t total = vertices.size();
+  for (const auto& f : found) total += f.size();
+  vertices.reserve(total);  // exactly: capacity doubling would hold up to twice the vertices at the peak
+  for (auto& f : found) {
+    std::move(f.begin(), f.end(), std::back_inserter(vertices));
+    std::vector<Found_vertex>().swap(f);  // freed now: the vertices are large, and peak memory is reported
+  }
   if (exponent != 0)
     for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
   Diagram diagram = assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices));
