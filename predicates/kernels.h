@@ -35,8 +35,11 @@ struct Certified_kernel {
   static bool hidden(const Site& i, Site_index index_i, const Site& j, Site_index index_j) {
     return is_hidden(i, index_i, j, index_j);
   }
-  // The correctly rounded x, y, z, r.
-  static std::array<double, 4> printed_coordinates(const Vertex& v) { return rounded_coordinates(v); }
+  // The correctly rounded x, y, z, r; reused when vertex_in_box's exact stage computed them already.
+  static std::array<double, 4> printed_coordinates(const Vertex& v) {
+    const std::array<double, 4>* known = v.rounded_if_computed();
+    return known != nullptr ? *known : rounded_coordinates(v);
+  }
 };
 
 struct Floating_kernel {

@@ -36,9 +36,10 @@ inline Wide scaled_rounded(std::uint64_t m, int e, int k) {
 }  // namespace round_trip_detail
 
 // Writes value as printf's "%.17g" does into out (room for 32 chars) and returns the end. 17 significant
-// digits identify every finite double. Values in [1e-14, 1e17) take an exact integer path: the 17 digits are m 2^e 10^(16 - d) rounded
-// to nearest (ties to even, as printf rounds the exact binary value) in 128-bit arithmetic, d the decimal
-// exponent. Others, zeros and non-finite values go to std::to_chars, which prints as printf does.
+// digits identify every finite double. Values in [1e-14, 1e17) take an exact integer path: the 17 digits
+// are m 2^e 10^(16 - d) rounded to nearest (ties to even, as printf rounds the exact binary value) in
+// 128-bit arithmetic, d the decimal exponent. Others, zeros and non-finite values go to std::to_chars,
+// which prints as printf does.
 inline char* write_round_trip(char* out, double value) {
   using namespace round_trip_detail;
   const double magnitude = std::fabs(value);
