@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -52,11 +53,29 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
     bool operator>(const Event& e) const { return key > e.key; }
   };
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
+  // Per box, the kWitnesses least events offered to it, by distinct sites: they pop before any larger
+  // event, which would then find the box full (or its site a witness) and be dropped, so it is not offered.
+  // Invariant: key ascending, sites distinct.
+  struct Offered {
+    std::array<double, kWitnesses> key;
+    std::array<Site_index, kWitnesses> site;
+    std::size_t count = 0;
+  };
+  std::vector<Offered> offered(graph.box.size());
   const auto offer = [&](Site_index s, std::size_t b) {
     if (graph.witnesses[b].size() == kWitnesses) return;  // its witnesses are final: the event would be dropped
     const double* c = graph.frame[b].centre.data();
     const double dx = c[0] - sites[s].x, dy = c[1] - sites[s].y, dz = c[2] - sites[s].z;
-    events.push({std::sqrt(dx * dx + dy * dy + dz * dz) - sites[s].w, s, b});  // NaN or inf only delays it
+    const double key = std::sqrt(dx * dx + dy * dy + dz * dz) - sites[s].w;  // inf only delays the event
+    Offered& o = offered[b];
+    if (!std::isnan(key)) {  // a NaN key is not ordered: always offered, it only delays its event
+      if (std::find(o.site.begin(), o.site.begin() + o.count, s) != o.site.begin() + o.count) return;  // same key
+      if (o.count == kWitnesses && !(key < o.key.back())) return;
+      std::size_t at = std::min(o.count, kWitnesses - 1);
+      for (; at > 0 && key < o.key[at - 1]; --at) o.key[at] = o.key[at - 1], o.site[at] = o.site[at - 1];
+      o.key[at] = key, o.site[at] = s, o.count = std::min(o.count + 1, kWitnesses);
+    }
+    events.push({key, s, b});
   };
   for (Site_index s : active) offer(s, partition.home(sites[s]));
   while (!events.empty()) {
