@@ -20,11 +20,13 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
   std::sort(by_x.begin(), by_x.end(), [&](Site_index a, Site_index b) { return sites[a].x < sites[b].x; });
   const auto [lightest, heaviest] =
       std::minmax_element(sites.begin(), sites.end(), [](const Site& a, const Site& b) { return a.w < b.w; });
-  const double light = lightest->w, heavy = heaviest->w;
-  auto certainly_apart = [&](Site_index left, Site_index right) {
+  const double weight_range = [&] {  // a double >= max w - min w
     Rounding_guard guard;
-    const Interval gap = (Interval(sites[right].x) - Interval(sites[left].x)) - (Interval(heavy) - Interval(light));
-    return gap.inf() > 0;
+    return (Interval(heaviest->w) - Interval(lightest->w)).sup();
+  }();
+  // Rounding to nearest is monotone and keeps doubles: a rounded x gap above weight_range is above it exactly.
+  auto certainly_apart = [&](Site_index left, Site_index right) {
+    return sites[right].x - sites[left].x > weight_range;
   };
 
   std::vector<Hidden_site> by_site(n, Hidden_site{0, 0, false});
