@@ -26,6 +26,7 @@
 //          u_i - u_j = ((x_j - x_i) - u_j q) / |c - x_i| = ((x_j - x_i) - u_i q) / |c - x_j|.
 //
 // Before both, the Lipschitz test: |grad d_k| <= 1, so f(c) > 2 reach >= 2 |x - c| gives f > 0 on the box.
+// Neither is tried where f(c) - sum_a |g_a| h_a certainly falls below 0 (centre_tests).
 //
 // All are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
 // only ever certify; a site they cannot remove stays a candidate. The `slack` argument multiplies those
@@ -119,6 +120,9 @@ struct Candidate_on_box {
   double rho = -1;                       // distance_to_box(i, frame) once computed, for (B)
   bool has_corner_squares = false;
   std::array<std::array<double, 3>, 2> corner_square{};  // (y_a - x_ia)^2 for the lower and upper bound of axis a, for (A)
+
+  // For another candidate on the same box.
+  void reset() { rho = -1, has_corner_squares = false; }
 };
 
 // The computed distance from x_s to the box of `frame` (rho_s, box units), or -1 out of range.
@@ -183,29 +187,51 @@ inline bool nearer_at_centre(const Site& s, const Centre_expansion& at_s, const 
 bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
                    double rho_i, const Box_frame& frame, double slack);
 
-// True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
-// at_j.has_corners if j.w <= i.w. `on_box` is i's, shared by all its witnesses on this box.
-inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
-                                const Centre_expansion& at_i, Candidate_on_box& on_box, const Box_frame& frame,
-                                double slack) {
-  if (!at_i.usable || !at_j.usable) return false;
+// What the centre expansions alone decide about whether j dominates i on the box.
+enum class Centre_outcome { dominated, kept, undecided };
+
+// The tests that need no corner: i certainly closer at the centre (kept), the Lipschitz test (dominated),
+// and the first-order bound f(c) - sum_a |g_a| h_a, g = u_i - u_j. When that bound certainly falls below 0,
+// (B) cannot hold (ERROR_BOUNDS.md, "Centre expansion", item 5) and i is kept without trying (A) either:
+// on 1j3h (A) removed 2% of its candidates there, against 2.2 million of its 2.3 million failures, and
+// skipping it cut the time by 6%. Keeping a candidate is always safe.
+inline Centre_outcome centre_tests(const Centre_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
+                                   double slack) {
+  if (!at_i.usable || !at_j.usable) return Centre_outcome::kept;
   const double gap = at_i.weighted - at_j.weighted;
   const double gap_error = slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude);
   // 8u (magnitude_i + magnitude_j) bounds the error of gap (ERROR_BOUNDS.md item 2): below it, i is
   // certainly closer at the centre, so not dominated.
-  if (!(gap > -gap_error)) return false;
+  if (!(gap > -gap_error)) return Centre_outcome::kept;
   // d_i - d_j is 2-Lipschitz and reach >= |x - c| on the box: f(c) > 2 reach decides without the corners
   // (ERROR_BOUNDS.md, "Centre expansion", item 7).
-  if (gap - 2 * frame.reach > 1.125 * gap_error) return true;
-  if (gap > 0 && corners_dominate(j, at_j, i, at_i, on_box, frame, slack)) return true;
-  // (B) needs f(c) > sum_a |g_a| h_a. Rejected here only when the plain doubles show that certainly fails
-  // (ERROR_BOUNDS.md, "Centre expansion", item 5); far from both sites they cannot, and (B) decides.
+  if (gap - 2 * frame.reach > 1.125 * gap_error) return Centre_outcome::dominated;
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
   if (!(gap - linear > -slack * 16 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude + 2 * frame.reach + linear)))
-    return false;
+    return Centre_outcome::kept;
+  return Centre_outcome::undecided;
+}
+
+// Tests (A) and (B), after centre_tests left the pair undecided. Precondition: at_j.has_corners if
+// j.w <= i.w. `on_box` is i's, shared by all its witnesses on this box.
+inline bool corners_or_far_dominate(const Site& j, const Witness_expansion& at_j, const Site& i,
+                                    const Centre_expansion& at_i, Candidate_on_box& on_box, const Box_frame& frame,
+                                    double slack) {
+  if (!at_j.usable) return false;  // add_corners found a corner out of range
+  if (at_i.weighted > at_j.weighted && corners_dominate(j, at_j, i, at_i, on_box, frame, slack)) return true;
   if (on_box.rho < 0) on_box.rho = distance_to_box(i, frame);
   return far_dominates(j, at_j, i, at_i, on_box.rho, frame, slack);
+}
+
+// True only if j is certainly strictly closer than i at every point of the box of `frame`. Precondition:
+// at_j.has_corners if j.w <= i.w.
+inline bool expansion_dominates(const Site& j, const Witness_expansion& at_j, const Site& i,
+                                const Centre_expansion& at_i, Candidate_on_box& on_box, const Box_frame& frame,
+                                double slack) {
+  const Centre_outcome outcome = centre_tests(at_j, at_i, frame, slack);
+  if (outcome != Centre_outcome::undecided) return outcome == Centre_outcome::dominated;
+  return corners_or_far_dominate(j, at_j, i, at_i, on_box, frame, slack);
 }
 
 }  // namespace apollonius

@@ -133,16 +133,23 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
   std::array<Witness_expansion, kWitnesses> at_witness;
   for (std::size_t w = 0; w < witnesses; ++w) at_witness[w] = expand_witness(expansion[witness[w]]);
 
+  Candidate_on_box on_box;  // reset for each candidate: constructing it showed in profiles
   for (std::size_t k = 0; k < count; ++k) {
     const Site& s = sites[candidate[k]];
     bool dominated = false;
-    Candidate_on_box on_box;
+    on_box.reset();
     // The witnesses before k in that order.
     for (std::size_t w = 0; w < witnesses && !dominated && witness[w] != k; ++w) {
       const Site& j = sites[candidate[witness[w]]];
-      // Test (A) needs the witness's corner distances against a candidate no smaller than it.
+      const Centre_outcome outcome = centre_tests(at_witness[w], expansion[k], frame, Kernel::filter_slack);
+      if (outcome != Centre_outcome::undecided) {
+        dominated = outcome == Centre_outcome::dominated;
+        continue;
+      }
+      // Test (A) needs the witness's corner distances against a candidate no smaller than it: computed only
+      // now, as most pairs are decided at the centre.
       if (!at_witness[w].has_corners && j.w <= s.w) add_corners(at_witness[w], j, frame);
-      dominated = expansion_dominates(j, at_witness[w], s, expansion[k], on_box, frame, Kernel::filter_slack);
+      dominated = corners_or_far_dominate(j, at_witness[w], s, expansion[k], on_box, frame, Kernel::filter_slack);
     }
     if (!dominated) stack_.push_back(candidate[k]);
   }
