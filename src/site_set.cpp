@@ -20,10 +20,11 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
   std::sort(by_x.begin(), by_x.end(), [&](Site_index a, Site_index b) { return sites[a].x < sites[b].x; });
   const auto [lightest, heaviest] =
       std::minmax_element(sites.begin(), sites.end(), [](const Site& a, const Site& b) { return a.w < b.w; });
-  const double weight_range = [&] {  // a double >= max w - min w
+  double weight_range;  // a double >= max w - min w
+  {
     Rounding_guard guard;
-    return (Interval(heaviest->w) - Interval(lightest->w)).sup();
-  }();
+    weight_range = (Interval(heaviest->w) - Interval(lightest->w)).sup();
+  }
   // Rounding to nearest is monotone and keeps doubles: a rounded x gap above weight_range is above it exactly.
   auto certainly_apart = [&](Site_index left, Site_index right) {
     return sites[right].x - sites[left].x > weight_range;

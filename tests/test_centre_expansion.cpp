@@ -55,10 +55,11 @@ struct Outcome {
   bool sound = true;
 };
 
-// Runs the test as the refinement does and, when it removes i, checks d_j < d_i exactly at 8 corners, the
-// centre and 24 random points.
 // Which removal test check_pair runs: the octree's sequence, or test (A) alone.
 enum class Removal_test { all, corners };
+
+// Runs the test as the refinement does (or test (A) alone) and, when it removes i, checks d_j < d_i exactly
+// at 8 corners, the centre and 24 random points.
 
 Outcome check_pair(const Axis_box& box, const Site& i, const Site& j, Random& random,
                    Removal_test test = Removal_test::all) {
