@@ -189,7 +189,7 @@ if [[ $FAMILIES != none ]]; then
   if ! "$APOLLONIUS" generate uniform --n 5 --seed 1 >/dev/null 2>&1; then
     log "generator families left out: '$APOLLONIUS' has no generate command"
   else
-    if [[ $FAMILIES == all ]]; then  # the families of src/site_generators.h
+    if [[ $FAMILIES == all ]]; then  # the families of src/reference/site_generators.h
       FAMILIES="uniform,equal-weights,lattice,coplanar,collinear,nested,tangent,mixed-sign,duplicates,cospherical,scaled-up,scaled-down,lattice-noise,far-vertices"
     fi
     IFS=, read -r -a families <<<"$FAMILIES"

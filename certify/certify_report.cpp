@@ -1,4 +1,4 @@
-#include "certify_report.h"
+#include "certify/certify_report.h"
 
 #include <cstdio>
 

@@ -5,9 +5,9 @@
 #include <ostream>
 #include <string>
 
-#include "claimed_vertices.h"
-#include "diagram.h"
-#include "judge_claims.h"
+#include "certify/claimed_vertices.h"
+#include "diagram/diagram.h"
+#include "certify/judge_claims.h"
 
 namespace apollonius {
 

@@ -1,4 +1,4 @@
-#include "claimed_vertices.h"
+#include "certify/claimed_vertices.h"
 
 #include <algorithm>
 #include <cmath>

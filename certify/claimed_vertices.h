@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "site.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 

@@ -1,4 +1,4 @@
-#include "coordinate_tolerance.h"
+#include "certify/coordinate_tolerance.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "site.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 

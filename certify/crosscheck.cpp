@@ -1,7 +1,7 @@
-#include "crosscheck.h"
+#include "certify/crosscheck.h"
 
 #include "io/round_trip.h"
-#include "judge_claims.h"
+#include "certify/judge_claims.h"
 
 namespace apollonius {
 

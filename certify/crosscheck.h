@@ -12,8 +12,8 @@
 #include <ostream>
 #include <vector>
 
-#include "coordinate_tolerance.h"
-#include "diagram.h"
+#include "certify/coordinate_tolerance.h"
+#include "diagram/diagram.h"
 
 namespace apollonius {
 

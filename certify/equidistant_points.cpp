@@ -1,10 +1,10 @@
-#include "equidistant_points.h"
+#include "certify/equidistant_points.h"
 
 #include <algorithm>
 #include <optional>
 
-#include "vertex_conflict.h"
-#include "vertices_of.h"
+#include "predicates/vertex_conflict.h"
+#include "predicates/vertices_of.h"
 
 namespace apollonius {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "vertex.h"
+#include "predicates/vertex.h"
 
 namespace apollonius {
 

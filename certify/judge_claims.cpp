@@ -1,14 +1,14 @@
-#include "judge_claims.h"
+#include "certify/judge_claims.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "compare_vertices.h"
-#include "equidistant_points.h"
-#include "vertex_conflict.h"
-#include "vertex_rounding.h"
+#include "predicates/compare_vertices.h"
+#include "certify/equidistant_points.h"
+#include "predicates/vertex_conflict.h"
+#include "predicates/vertex_rounding.h"
 
 namespace apollonius {
 namespace {

@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
-#include "claimed_vertices.h"
-#include "coordinate_tolerance.h"
-#include "diagram.h"
+#include "certify/claimed_vertices.h"
+#include "certify/coordinate_tolerance.h"
+#include "diagram/diagram.h"
 
 namespace apollonius {
 

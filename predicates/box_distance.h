@@ -2,9 +2,9 @@
 // involved, so it is exact in Exact and enclosed in Interval.
 #pragma once
 
-#include "axis_box.h"
-#include "number_types.h"
-#include "site.h"
+#include "predicates/axis_box.h"
+#include "predicates/number_types.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 

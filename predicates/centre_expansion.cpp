@@ -1,4 +1,4 @@
-#include "centre_expansion.h"
+#include "predicates/centre_expansion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,14 +42,14 @@ Box_frame frame_of(const Axis_box& box) {
     extent[a] = std::max(frame.centre[a] - box.lo[a], box.hi[a] - frame.centre[a]);
     longest = std::max(longest, extent[a]);
   }
-  // Box units: the longest half-extent in [1, 2), unless it lies beyond 2^+-1000 (ERROR_BOUNDS.md item 1).
+  // Box units: the longest half-extent in [1, 2), unless it lies beyond 2^+-1000 (docs/ERROR_BOUNDS.md item 1).
   frame.exponent = unit_exponent(longest);
   frame.unit = power_of_two(-frame.exponent);
   double squares = 0;
   for (int a = 0; a < 3; ++a) {
     frame.corner_offset[0][a] = (box.lo[a] - frame.centre[a]) * frame.unit;
     frame.corner_offset[1][a] = (box.hi[a] - frame.centre[a]) * frame.unit;
-    // One subtraction each way; 1 + 4u covers its rounding (ERROR_BOUNDS.md, "Centre expansion", item 1).
+    // One subtraction each way; 1 + 4u covers its rounding (docs/ERROR_BOUNDS.md, "Centre expansion", item 1).
     frame.half_extent[a] = extent[a] * frame.unit * (1 + 4 * kUnitRoundoff);
     squares += frame.half_extent[a] * frame.half_extent[a];
   }
@@ -93,7 +93,7 @@ void add_corners(Witness_expansion& e, const Site& s, const Box_frame& frame) {
 namespace {
 
 // What (B) needs of the pair (i, j) in pair units, from p = (x_j - x_i) 2^-exponent (centre_expansion.h;
-// ERROR_BOUNDS.md item 4). Usable when |c - x_i| + |c - x_j| is at least 2^-470 box units.
+// docs/ERROR_BOUNDS.md item 4). Usable when |c - x_i| + |c - x_j| is at least 2^-470 box units.
 struct Pair_at_centre {
   int exponent;                     // the largest |p_a| lies in [1, 2) (unless |exponent| = 1000)
   std::array<double, 3> towards_j;  // p
@@ -154,7 +154,7 @@ bool far_dominates(const Site& j, const Witness_expansion& at_j, const Site& i, 
   const double reach = frame.reach * power_of_two(shift / 2) * power_of_two(shift - shift / 2);
   const double lipschitz_reach = rho_sum > 0 ? std::min(2 * reach, 2 * separation * frame.reach / rho_sum) : 2 * reach;
   const double bound = std::min(lipschitz_reach, linear + curvature);
-  // The slack covers the rounding errors of f(c) and of the bound (ERROR_BOUNDS.md, "Centre expansion").
+  // The slack covers the rounding errors of f(c) and of the bound (docs/ERROR_BOUNDS.md, "Centre expansion").
   const double error_scale =
       bound + separation + std::fabs(pair.weight_difference) + gap + 2 * separation * frame.reach * inverse;
   return bound + slack * 64 * kUnitRoundoff * error_scale < gap;

@@ -21,14 +21,14 @@
 //      the norm of Hess d_i - Hess d_j: both sites far from the box, their curvatures nearly cancel.
 //      f(c) and g are computed from x_j - x_i, not as differences of two large distances or gradients,
 //      so that (B) still separates two sites seen from a box a million million times farther away than
-//      they are apart (ERROR_BOUNDS.md, "Centre expansion", item 4):
+//      they are apart (docs/ERROR_BOUNDS.md, "Centre expansion", item 4):
 //          |c - x_i| - |c - x_j| = (x_j - x_i).((c - x_i) + (c - x_j)) / (|c - x_i| + |c - x_j|) =: q,
 //          u_i - u_j = ((x_j - x_i) - u_j q) / |c - x_i| = ((x_j - x_i) - u_i q) / |c - x_j|.
 //
 // Before both, the Lipschitz test: |grad d_k| <= 1, so f(c) > 2 reach >= 2 |x - c| gives f > 0 on the box.
 // Neither is tried where f(c) - sum_a |g_a| h_a certainly falls below 0 (centre_tests).
 //
-// All are evaluated in plain doubles with the error bounds of ERROR_BOUNDS.md ("Centre expansion") and
+// All are evaluated in plain doubles with the error bounds of docs/ERROR_BOUNDS.md ("Centre expansion") and
 // only ever certify; a site they cannot remove stays a candidate. The `slack` argument multiplies those
 // bounds: 1 on the certified path, 0 on the floating path (kernels.h).
 //
@@ -42,8 +42,8 @@
 #include <array>
 #include <cmath>
 
-#include "axis_box.h"
-#include "site.h"
+#include "predicates/axis_box.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 
@@ -63,7 +63,7 @@ struct Box_frame {
 
 Box_frame frame_of(const Axis_box& box);
 
-// d_s near the box centre in box units, as computed in doubles (within the bounds of ERROR_BOUNDS.md).
+// d_s near the box centre in box units, as computed in doubles (within the bounds of docs/ERROR_BOUNDS.md).
 struct Centre_expansion {
   std::array<double, 3> offset;    // c - x_s
   double distance;                 // |c - x_s|
@@ -83,7 +83,7 @@ struct Witness_expansion : Centre_expansion {
 };
 
 // Sums of squares inside [kTinySquare, kHugeSquare] (or exactly 0) keep the relative error bounds of
-// ERROR_BOUNDS.md: underflowed terms are then negligible and nothing overflows.
+// docs/ERROR_BOUNDS.md: underflowed terms are then negligible and nothing overflows.
 constexpr double kTinySquare = 0x1p-960, kHugeSquare = 0x1p960, kHugeWeight = 0x1p480;
 constexpr double kUnitRoundoff = 0x1p-53;  // u, of round-to-nearest doubles
 inline bool in_error_bound_range(double sum_of_squares) {
@@ -128,7 +128,7 @@ struct Candidate_on_box {
 // The computed distance from x_s to the box of `frame` (rho_s, box units), or -1 out of range.
 double distance_to_box(const Site& s, const Box_frame& frame);
 
-// Test (A). The margins cover the rounding errors of the corner values (ERROR_BOUNDS.md "Centre
+// Test (A). The margins cover the rounding errors of the corner values (docs/ERROR_BOUNDS.md "Centre
 // expansion", item 3). Precondition: at_j.has_corners if j.w <= i.w.
 inline bool corners_dominate(const Site& j, const Witness_expansion& at_j, const Site& i, const Centre_expansion& at_i,
                              Candidate_on_box& on_box, const Box_frame& frame, double slack) {
@@ -176,7 +176,7 @@ inline bool corners_dominate(const Site& j, const Witness_expansion& at_j, const
 double centre_difference(const Site& i, const Centre_expansion& at_i, const Site& j, const Centre_expansion& at_j);
 
 // Whether s is nearer than t at the centre, for choosing witnesses (a wrong choice costs boxes, never a
-// vertex). 8u (magnitude_s + magnitude_t) bounds the error of the plain difference (ERROR_BOUNDS.md).
+// vertex). 8u (magnitude_s + magnitude_t) bounds the error of the plain difference (docs/ERROR_BOUNDS.md).
 inline bool nearer_at_centre(const Site& s, const Centre_expansion& at_s, const Site& t, const Centre_expansion& at_t) {
   const double difference = at_s.weighted - at_t.weighted;
   if (std::fabs(difference) > 8 * kUnitRoundoff * (at_s.magnitude + at_t.magnitude)) return difference < 0;
@@ -192,7 +192,7 @@ enum class Centre_outcome { dominated, kept, undecided };
 
 // The tests that need no corner: i certainly closer at the centre (kept), the Lipschitz test (dominated),
 // and the first-order bound f(c) - sum_a |g_a| h_a, g = u_i - u_j. When that bound certainly falls below 0,
-// (B) cannot hold (ERROR_BOUNDS.md, "Centre expansion", item 5) and i is kept without trying (A) either:
+// (B) cannot hold (docs/ERROR_BOUNDS.md, "Centre expansion", item 5) and i is kept without trying (A) either:
 // on 1j3h, 2% of (A)'s removals lay there, against 2.2 million of its 2.3 million failures, and skipping
 // it cut the time by 6%. Keeping a candidate is always safe.
 inline Centre_outcome centre_tests(const Centre_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
@@ -200,11 +200,11 @@ inline Centre_outcome centre_tests(const Centre_expansion& at_j, const Centre_ex
   if (!at_i.usable || !at_j.usable) return Centre_outcome::kept;
   const double gap = at_i.weighted - at_j.weighted;
   const double gap_error = slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude);
-  // 8u (magnitude_i + magnitude_j) bounds the error of gap (ERROR_BOUNDS.md item 2): below it, i is
+  // 8u (magnitude_i + magnitude_j) bounds the error of gap (docs/ERROR_BOUNDS.md item 2): below it, i is
   // certainly closer at the centre, so not dominated.
   if (!(gap > -gap_error)) return Centre_outcome::kept;
   // d_i - d_j is 2-Lipschitz and reach >= |x - c| on the box: f(c) > 2 reach decides without the corners
-  // (ERROR_BOUNDS.md, "Centre expansion", item 7).
+  // (docs/ERROR_BOUNDS.md, "Centre expansion", item 7).
   if (gap - 2 * frame.reach > 1.125 * gap_error) return Centre_outcome::dominated;
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];

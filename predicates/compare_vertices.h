@@ -3,8 +3,8 @@
 // Two vertices lie in different fields Q(sqrt d_u), Q(sqrt d_v): each comparison costs two squarings.
 #pragma once
 
-#include "filtered_predicate.h"
-#include "vertex.h"
+#include "predicates/filtered_predicate.h"
+#include "predicates/vertex.h"
 
 namespace apollonius {
 

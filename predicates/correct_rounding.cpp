@@ -1,4 +1,4 @@
-#include "correct_rounding.h"
+#include "predicates/correct_rounding.h"
 
 #include <mpfr.h>
 

@@ -1,7 +1,7 @@
 // The double nearest to an exact root number (ties to even): the printed coordinates of a vertex.
 #pragma once
 
-#include "root_sign.h"
+#include "predicates/root_sign.h"
 
 namespace apollonius {
 

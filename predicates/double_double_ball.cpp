@@ -1,4 +1,4 @@
-#include "double_double_ball.h"
+#include "predicates/double_double_ball.h"
 
 #include <limits>
 

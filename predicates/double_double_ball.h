@@ -1,12 +1,12 @@
 // Double-double numbers that carry a certified bound on their distance to the real number they stand
 // for: a cheap, rigorous way to locate a vertex to about 100 bits, enough to round it correctly almost
 // always (correct_rounding.h). Plain round-to-nearest doubles, no rounding-mode change; every bound is
-// derived in ERROR_BOUNDS.md ("Double-double balls").
+// derived in docs/ERROR_BOUNDS.md ("Double-double balls").
 #pragma once
 
 #include <cmath>
 
-#include "sign.h"
+#include "predicates/sign.h"
 
 namespace apollonius {
 
@@ -76,7 +76,7 @@ inline Double_double_ball operator-(const Double_double_ball& a) { return {-a.hi
 inline Double_double_ball operator-(const Double_double_ball& a, const Double_double_ball& b) { return a + (-b); }
 
 // The exact product of the high parts, the two cross terms rounded, the product of the low parts
-// dropped: relative error at most 8u^2 (ERROR_BOUNDS.md), taken as 10u^2 of the result.
+// dropped: relative error at most 8u^2 (docs/ERROR_BOUNDS.md), taken as 10u^2 of the result.
 inline Double_double_ball operator*(const Double_double_ball& a, const Double_double_ball& b) {
   double ph, pl, zh, zl;
   using namespace double_double;

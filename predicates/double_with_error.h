@@ -1,13 +1,13 @@
 // A double with a certified bound on its distance to the real number it stands for, propagated by running
 // error analysis (Higham, Accuracy and Stability of Numerical Algorithms, 3.3): the first, cheapest filter
 // stage of vertices_of. Each operation is a few branch-free flops, against the sign cases of an interval
-// product; no rounding-mode change. The bounds are derived in ERROR_BOUNDS.md ("Doubles with error").
+// product; no rounding-mode change. The bounds are derived in docs/ERROR_BOUNDS.md ("Doubles with error").
 #pragma once
 
 #include <cmath>
 #include <limits>
 
-#include "number_types.h"
+#include "predicates/number_types.h"
 
 namespace apollonius {
 

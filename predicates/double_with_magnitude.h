@@ -3,12 +3,12 @@
 // and |computed - exact| <= gamma_{3 kDepth} magnitude. The polynomial part of vertices_of's first stage
 // (quadruple_line.h) runs in it at about two thirds of the cost of Double_with_error's running bound, then
 // hands Double_with_error its values and bounds for the divisions and square roots. Only +, - and *.
-// The bound and kDepth are derived in ERROR_BOUNDS.md ("Doubles with magnitude").
+// The bound and kDepth are derived in docs/ERROR_BOUNDS.md ("Doubles with magnitude").
 #pragma once
 
 #include <cmath>
 
-#include "double_with_error.h"
+#include "predicates/double_with_error.h"
 
 namespace apollonius {
 

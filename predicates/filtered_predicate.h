@@ -5,15 +5,15 @@
 
 #include <utility>
 
-#include "number_types.h"
-#include "predicate_counter.h"
-#include "rounding_guard.h"
+#include "predicates/number_types.h"
+#include "predicates/predicate_counter.h"
+#include "predicates/rounding_guard.h"
 
 namespace apollonius {
 
 // Predicate must provide `static constexpr const char* name` and `template <class NT> static R evaluate(...)`;
 // it may provide `static std::optional<R> static_filter(...)`, a cheaper first stage in plain doubles with
-// a derived error bound (ERROR_BOUNDS.md), which answers only when certain.
+// a derived error bound (docs/ERROR_BOUNDS.md), which answers only when certain.
 template <class Predicate>
 class Filtered_predicate {
  public:

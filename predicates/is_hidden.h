@@ -3,8 +3,8 @@
 // hidden one, so that exactly one of them stays.
 #pragma once
 
-#include "filtered_predicate.h"
-#include "site.h"
+#include "predicates/filtered_predicate.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 

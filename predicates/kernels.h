@@ -9,13 +9,13 @@
 
 #include <array>
 
-#include "axis_box.h"
-#include "compare_vertices.h"
-#include "is_hidden.h"
-#include "vertex_conflict.h"
-#include "vertex_in_box.h"
-#include "vertex_rounding.h"
-#include "vertices_of.h"
+#include "predicates/axis_box.h"
+#include "predicates/compare_vertices.h"
+#include "predicates/is_hidden.h"
+#include "predicates/vertex_conflict.h"
+#include "predicates/vertex_in_box.h"
+#include "predicates/vertex_rounding.h"
+#include "predicates/vertices_of.h"
 
 namespace apollonius {
 

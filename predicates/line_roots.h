@@ -5,7 +5,7 @@
 #include <boost/container/static_vector.hpp>
 #include <cmath>
 
-#include "vertex.h"
+#include "predicates/vertex.h"
 
 namespace apollonius {
 

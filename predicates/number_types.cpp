@@ -1,4 +1,4 @@
-#include "number_types.h"
+#include "predicates/number_types.h"
 
 #include <cmath>
 #include <limits>

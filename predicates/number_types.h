@@ -8,7 +8,7 @@
 #include <CGAL/Gmpzf.h>
 #include <CGAL/Interval_nt.h>
 
-#include "sign.h"
+#include "predicates/sign.h"
 
 namespace apollonius {
 

@@ -1,4 +1,4 @@
-#include "predicate_counter.h"
+#include "predicates/predicate_counter.h"
 
 #include <algorithm>
 #include <mutex>

@@ -14,9 +14,9 @@
 #include <array>
 #include <type_traits>
 
-#include "double_with_magnitude.h"
-#include "number_types.h"
-#include "site.h"
+#include "predicates/double_with_magnitude.h"
+#include "predicates/number_types.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 

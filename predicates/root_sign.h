@@ -6,7 +6,7 @@
 // throws when an interval straddles zero), with Exact they are the exact stage.
 #pragma once
 
-#include "number_types.h"
+#include "predicates/number_types.h"
 
 namespace apollonius {
 

@@ -1,4 +1,4 @@
-#include "sign.h"
+#include "predicates/sign.h"
 
 namespace apollonius {
 

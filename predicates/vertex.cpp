@@ -1,11 +1,11 @@
-#include "vertex.h"
+#include "predicates/vertex.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "line_roots.h"
-#include "rounding_guard.h"
-#include "vertices_of.h"
+#include "predicates/line_roots.h"
+#include "predicates/rounding_guard.h"
+#include "predicates/vertices_of.h"
 
 namespace apollonius {
 namespace {

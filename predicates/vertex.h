@@ -7,10 +7,10 @@
 #include <memory>
 #include <type_traits>
 
-#include "double_with_error.h"
-#include "quadratic.h"
-#include "quadruple_line.h"
-#include "root_sign.h"
+#include "predicates/double_with_error.h"
+#include "predicates/quadratic.h"
+#include "predicates/quadruple_line.h"
+#include "predicates/root_sign.h"
 
 namespace apollonius {
 

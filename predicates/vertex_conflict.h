@@ -6,8 +6,8 @@
 // |a_s|^2 - b_s^2 - <(a_s, b_s), X>  with a_s = p_s - p_0, b_s = w_s - w_0: one square root, one squaring.
 #pragma once
 
-#include "filtered_predicate.h"
-#include "vertex.h"
+#include "predicates/filtered_predicate.h"
+#include "predicates/vertex.h"
 
 namespace apollonius {
 

@@ -5,9 +5,9 @@
 
 #include <optional>
 
-#include "axis_box.h"
-#include "compare_vertices.h"
-#include "vertex_rounding.h"
+#include "predicates/axis_box.h"
+#include "predicates/compare_vertices.h"
+#include "predicates/vertex_rounding.h"
 
 namespace apollonius {
 

@@ -1,11 +1,11 @@
-#include "vertex_rounding.h"
+#include "predicates/vertex_rounding.h"
 
 #include <cmath>
 #include <limits>
 
-#include "correct_rounding.h"
-#include "double_double_ball.h"
-#include "quadruple_line.h"
+#include "predicates/correct_rounding.h"
+#include "predicates/double_double_ball.h"
+#include "predicates/quadruple_line.h"
 
 namespace apollonius {
 namespace {

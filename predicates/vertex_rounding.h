@@ -6,7 +6,7 @@
 #include <array>
 #include <optional>
 
-#include "vertex.h"
+#include "predicates/vertex.h"
 
 namespace apollonius {
 

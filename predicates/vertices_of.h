@@ -10,9 +10,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "double_with_magnitude.h"
-#include "filtered_predicate.h"
-#include "line_roots.h"
+#include "predicates/double_with_magnitude.h"
+#include "predicates/filtered_predicate.h"
+#include "predicates/line_roots.h"
 
 namespace apollonius {
 

@@ -5,16 +5,16 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "brute_force_diagram.h"
-#include "certify_command.h"
-#include "crosscheck_command.h"
+#include "reference/brute_force_diagram.h"
+#include "cli/certify_command.h"
+#include "cli/crosscheck_command.h"
 #include "cli/arguments.h"
 #include "cli/generate_command.h"
-#include "octree_diagram.h"
+#include "octree/octree_diagram.h"
 #include "io/input_error.h"
 #include "io/read_sites.h"
 #include "io/write_vertices.h"
-#include "predicate_counter.h"
+#include "predicates/predicate_counter.h"
 
 namespace apollonius {
 namespace {

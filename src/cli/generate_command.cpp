@@ -7,7 +7,7 @@
 
 #include "cli/arguments.h"
 #include "io/write_sites.h"
-#include "site_generators.h"
+#include "reference/site_generators.h"
 
 namespace apollonius {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "io/read_sites.h"
-#include "site.h"
+#include "predicates/site.h"
 
 namespace apollonius {
 

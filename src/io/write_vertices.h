@@ -4,8 +4,8 @@
 #include <ostream>
 #include <vector>
 
-#include "diagram.h"
-#include "predicate_counter.h"
+#include "diagram/diagram.h"
+#include "predicates/predicate_counter.h"
 
 namespace apollonius {
 

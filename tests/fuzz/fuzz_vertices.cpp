@@ -21,10 +21,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "brute_force_diagram.h"
+#include "reference/brute_force_diagram.h"
 #include "io/write_sites.h"
 #include "io/write_vertices.h"
-#include "octree_diagram.h"
+#include "octree/octree_diagram.h"
 
 namespace {
 

@@ -1,0 +1,47 @@
+// The vertex set of an Apollonius diagram, as every algorithm reports it and every writer prints it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "predicates/axis_box.h"
+#include "predicates/site.h"
+#include "predicates/vertex.h"
+
+namespace apollonius {
+
+// Invariant: tie_set is ascending, has 4 or more sites, and contains vertex.sites().
+struct Diagram_vertex {
+  std::vector<Site_index> tie_set;  // every site at the minimum weighted distance
+  Vertex vertex;                    // one defining quadruple of the tie set, and its root
+  std::array<double, 4> rounded;    // x, y, z, r: the correctly rounded doubles, for output only
+};
+
+// A site whose cell has no interior: inside (or tangent inside) the ball of hidden_by, or an exact
+// duplicate of the earlier site hidden_by.
+struct Hidden_site {
+  Site_index site;
+  Site_index hidden_by;
+  bool duplicate;
+};
+
+// Invariants: vertices sorted by tie set, then by printed x, y, z, r, then exactly; each point once;
+// hidden ascending by site; sites_without_vertex ascending, disjoint from hidden.
+struct Diagram {
+  std::size_t site_count = 0;
+  std::vector<Diagram_vertex> vertices;
+  std::vector<Hidden_site> hidden;
+  std::vector<Site_index> sites_without_vertex;
+};
+
+// Keeps only the vertices whose centre lies in the closed box (exact).
+void restrict_to_box(Diagram& diagram, const Axis_box& box);
+
+// Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
+// Kernel: kernels.h (the certified one, unless for the floating path).
+template <class Kernel>
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
+                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices);
+
+}  // namespace apollonius

@@ -1,0 +1,61 @@
+// Step 3 of the octree (paper sections 5.2.1-5.2.2): a seed box and its candidates are split into 8
+// until few candidates remain, and every leaf is decided exactly.
+//
+// At every box, each candidate is tested against the box's best candidates (least d at the centre) with
+// the certified tests of centre_expansion.h. A removed site is strictly farther than another site at every
+// point of the box, so the candidates stay a superset of the owners of every point of the box. A leaf
+// enumerates the quadruples of its candidates (cached per thread: neighbouring leaves share them) and
+// keeps the vertices that lie in it; their tie sets are among its candidates. The paper stops at four
+// candidates; a leaf of up to six (fifteen quadruples, mostly cached) costs less than the levels of
+// refinement that separating the fifth and sixth would take.
+//
+// Degenerate input (five or more sites tangent to one sphere, lattices) can keep more candidates in
+// arbitrarily small boxes; such a box becomes a leaf once refining stops helping. No vertex is dropped:
+// every leaf is decided exactly.
+#pragma once
+
+#include <vector>
+
+#include "predicates/axis_box.h"
+#include "predicates/centre_expansion.h"
+#include "octree/leaf_decision.h"
+#include "octree/quadruple_cache.h"
+
+namespace apollonius {
+
+// How much refining was done: boxes filtered, leaves decided, and candidates in those leaves.
+struct Refinement_counts {
+  std::size_t boxes = 0, leaves = 0, leaf_candidates = 0, quadruples = 0, distinct_quadruples = 0;
+};
+
+// Work space for refining boxes, one per thread. Kernel: kernels.h.
+template <class Kernel>
+class Box_refinement {
+ public:
+  // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
+  Box_refinement(const std::vector<Site>& sites, const Axis_box& root) : sites_(sites), root_(root) {}
+
+  // Appends every vertex located in the box (half-open, closed on the root's upper faces), with its tie set.
+  // Precondition: `candidates` contains every site that owns a point of the closed box.
+  void find_vertices(const Axis_box& box, const std::vector<Site_index>& candidates, std::vector<Found_vertex>& out);
+
+  Refinement_counts counts() const;
+
+ private:
+  // Refines the box whose candidates are stack_[first, stack_.size()).
+  void refine(const Axis_box& box, std::size_t first, int depth, int stagnant, std::vector<Found_vertex>& out);
+  // Moves the candidates that no witness dominates on the box to the end of stack_.
+  void keep_undominated(const Axis_box& box, std::size_t first, std::size_t end);
+  bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
+  void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
+
+  const std::vector<Site>& sites_;
+  Axis_box root_;
+  std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
+  std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
+  std::vector<Site_index> tie_;
+  Quadruple_cache<Kernel> cache_;
+  Refinement_counts counts_;
+};
+
+}  // namespace apollonius

@@ -1,0 +1,158 @@
+#include "octree/candidate_propagation.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "predicates/centre_expansion.h"
+
+namespace apollonius {
+namespace {
+
+// Each box keeps this many witnesses: sites of least distance at its centre, found by pass 1.
+constexpr std::size_t kWitnesses = 4;
+
+// The boxes with their centres, witnesses and face neighbours (compressed rows).
+// Invariant: witnesses[b] holds distinct sites by ascending d at the centre.
+struct Box_graph {
+  std::vector<Axis_box> box;
+  std::vector<Box_frame> frame;
+  std::vector<std::size_t> neighbour_start, neighbours;
+  std::vector<std::vector<std::pair<Site_index, Witness_expansion>>> witnesses;
+
+  explicit Box_graph(const Seed_partition& partition)
+      : box(partition.id_count()),
+        frame(partition.id_count()),
+        neighbour_start(partition.id_count() + 1, 0),
+        witnesses(partition.id_count()) {
+    for (std::size_t id = 0; id < partition.id_count(); ++id) {
+      if (partition.is_box(id)) {
+        box[id] = partition.box(id);
+        frame[id] = frame_of(box[id]);
+        partition.append_face_neighbours(id, neighbours);
+      }
+      neighbour_start[id + 1] = neighbours.size();
+    }
+  }
+};
+
+// Pass 1, the paper's distance propagation: sites spread from their home boxes in Dijkstra order of
+// their distance at the box centres, and each box keeps the first kWitnesses that reach it (usually the
+// nearest; which sites they are matters for speed only).
+void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std::vector<Site_index>& active,
+                    const Seed_partition& partition) {
+  struct Event {
+    double key;  // d of the site at the box centre
+    Site_index site;
+    std::size_t box;
+    bool operator>(const Event& e) const { return key > e.key; }
+  };
+  std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
+  // Per box, the kWitnesses least events offered to it, by distinct sites: they pop before any larger
+  // event, which would then find the box full (or its site a witness) and be dropped, so it is not offered.
+  // Invariant: key ascending, sites distinct.
+  struct Offered {
+    std::array<double, kWitnesses> key;
+    std::array<Site_index, kWitnesses> site;
+    std::size_t count = 0;
+  };
+  std::vector<Offered> offered(graph.box.size());
+  const auto offer = [&](Site_index s, std::size_t b) {
+    if (graph.witnesses[b].size() == kWitnesses) return;  // its witnesses are final: the event would be dropped
+    const double* c = graph.frame[b].centre.data();
+    const double dx = c[0] - sites[s].x, dy = c[1] - sites[s].y, dz = c[2] - sites[s].z;
+    const double key = std::sqrt(dx * dx + dy * dy + dz * dz) - sites[s].w;  // inf only delays the event
+    Offered& o = offered[b];
+    if (!std::isnan(key)) {  // a NaN key is not ordered: always offered, it only delays its event
+      if (std::find(o.site.begin(), o.site.begin() + o.count, s) != o.site.begin() + o.count) return;  // same key
+      if (o.count == kWitnesses && !(key < o.key.back())) return;
+      std::size_t at = std::min(o.count, kWitnesses - 1);
+      for (; at > 0 && key < o.key[at - 1]; --at) o.key[at] = o.key[at - 1], o.site[at] = o.site[at - 1];
+      o.key[at] = key, o.site[at] = s, o.count = std::min(o.count + 1, kWitnesses);
+    }
+    events.push({key, s, b});
+  };
+  for (Site_index s : active) offer(s, partition.home(sites[s]));
+  while (!events.empty()) {
+    const Event e = events.top();
+    events.pop();
+    auto& held = graph.witnesses[e.box];
+    if (held.size() == kWitnesses ||
+        std::any_of(held.begin(), held.end(), [&](const auto& w) { return w.first == e.site; }))
+      continue;
+    held.emplace_back(e.site, expand_witness(expand_at_centre(sites[e.site], graph.frame[e.box])));
+    add_corners(held.back().second, sites[e.site], graph.frame[e.box]);
+    for (std::size_t k = graph.neighbour_start[e.box]; k < graph.neighbour_start[e.box + 1]; ++k)
+      offer(e.site, graph.neighbours[k]);
+  }
+}
+
+// Whether a witness of box b certainly dominates site s on it (centre_expansion.h).
+bool dominated(const Box_graph& graph, const std::vector<Site>& sites, std::size_t b, Site_index s, double slack) {
+  const auto& held = graph.witnesses[b];
+  if (held.empty()) return false;
+  const Centre_expansion at_s = expand_at_centre(sites[s], graph.frame[b]);
+  Candidate_on_box on_box;
+  for (const auto& [w, at_w] : held)
+    if (w != s && expansion_dominates(sites[w], at_w, sites[s], at_s, on_box, graph.frame[b], slack)) return true;
+  return false;
+}
+
+// Pass 2: each site floods from its home box through face neighbours, entering every box where no
+// witness dominates it. Returns the (box, site) pairs of one thread's sites.
+struct Flood {
+  std::vector<Site_index> last_visitor;  // per box: the last site whose flood visited it, or none
+  std::vector<std::size_t> stack;
+  std::vector<std::pair<std::size_t, Site_index>> entered;
+  explicit Flood(std::size_t boxes) : last_visitor(boxes, std::numeric_limits<Site_index>::max()) {}
+};
+
+void flood(Flood& f, const Box_graph& graph, const std::vector<Site>& sites, const Seed_partition& partition,
+           Site_index s, double slack) {
+  const std::size_t home = partition.home(sites[s]);
+  f.last_visitor[home] = s;
+  f.stack.assign(1, home);
+  while (!f.stack.empty()) {
+    const std::size_t b = f.stack.back();
+    f.stack.pop_back();
+    if (dominated(graph, sites, b, s, slack)) continue;
+    f.entered.emplace_back(b, s);
+    for (std::size_t k = graph.neighbour_start[b]; k < graph.neighbour_start[b + 1]; ++k) {
+      const std::size_t next = graph.neighbours[k];
+      if (f.last_visitor[next] == s) continue;
+      f.last_visitor[next] = s;
+      f.stack.push_back(next);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
+                                                          const std::vector<Site_index>& active,
+                                                          const Seed_partition& partition, double slack) {
+  Box_graph graph(partition);
+  find_witnesses(graph, sites, active, partition);
+
+  tbb::enumerable_thread_specific<Flood> floods(partition.id_count());
+  tbb::parallel_for(std::size_t{0}, active.size(), [&](std::size_t k) {
+    flood(floods.local(), graph, sites, partition, active[k], slack);
+  });
+  std::vector<std::size_t> count(partition.id_count(), 0);
+  for (const Flood& f : floods)
+    for (const auto& entry : f.entered) ++count[entry.first];
+  std::vector<std::vector<Site_index>> candidates(partition.id_count());
+  for (std::size_t b = 0; b < candidates.size(); ++b) candidates[b].reserve(count[b]);
+  for (const Flood& f : floods)
+    for (const auto& [b, s] : f.entered) candidates[b].push_back(s);
+  // The same lists for every thread count.
+  for (auto& list : candidates) std::sort(list.begin(), list.end());
+  return candidates;
+}
+
+}  // namespace apollonius

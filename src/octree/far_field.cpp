@@ -1,0 +1,216 @@
+#include "octree/far_field.h"
+
+#include <CGAL/FPU.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "predicates/kernels.h"
+#include "octree/leaf_decision.h"
+
+namespace apollonius {
+namespace {
+
+// Patches are refined at most this often (6 * 4^10 patches at the most, only where sites nearly tie at
+// infinity). A patch whose kept sites stop changing for kStagnationLevels levels, with at most
+// kStagnantSites of them, stops earlier: sites that tie at infinity (or beyond what the root box lets the
+// bound see) are not separated by finer patches, and their quadruples are decided anyway.
+constexpr int kMaxPatchDepth = 10;
+constexpr int kStagnationLevels = 2;
+constexpr std::size_t kStagnantSites = 8;
+// Witnesses tried per patch (refine()).
+constexpr int kWitnesses = 3;
+
+struct Patch {
+  int axis;     // the face of [-1, 1]^3: direction y with y[axis] = side
+  double side;  // +1 or -1
+  double s0, s1, t0, t1;  // the other two coordinates of y, in axis order
+  int depth;
+  int stagnant;  // levels since the kept sites last changed
+};
+
+using Quadruple_key = std::array<Site_index, 4>;
+
+// The certified far field rounds its intervals outwards; the floating path (kernels.h) evaluates the same
+// formulas in round-to-nearest, as plain doubles would. Either way the caller's mode comes back.
+template <class Kernel>
+struct Far_field_rounding {
+  CGAL::Protect_FPU_rounding<true> protect{Kernel::rounds_outwards ? CGAL_FE_UPWARD : CGAL_FE_TONEAREST};
+};
+
+// CGAL's interval square root switches the rounding mode to downward and back to upward, which is right
+// only under the certified guard: the floating path takes the square roots of its bounds, to nearest.
+template <class Kernel>
+Interval interval_sqrt(const Interval& x) {
+  if constexpr (Kernel::rounds_outwards)
+    return CGAL::sqrt(x);
+  else
+    return Interval(std::sqrt(std::max(x.inf(), 0.0)), std::sqrt(x.sup()));
+}
+
+template <class Kernel>
+class Far_field {
+ public:
+  Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius)
+      : sites_(sites), origin_(origin), radius_(radius) {}
+
+  void refine(const Patch& p, const std::vector<Site_index>& candidates) {
+    std::vector<Site_index> kept = candidates;
+    {
+      const Far_field_rounding<Kernel> rounding;
+      // A witness far from the others (a lone ball beside a small cluster) may tie with all of them, so
+      // the next witness is the best of the sites it kept, up to kWitnesses of them.
+      const Direction_box directions = direction_box(p);
+      std::vector<Site_index> tried;
+      for (int round = 0; round < kWitnesses && kept.size() > 3; ++round) {
+        const std::optional<Site_index> w = witness(p, kept, tried);
+        if (!w) break;
+        tried.push_back(*w);
+        remove_beaten(directions, sites_[*w], kept);
+      }
+    }
+    if (kept.size() <= 3) return;
+    const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
+    if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
+        (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
+      record_quadruples(kept);
+      return;
+    }
+    const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2;
+    for (int q = 0; q < 4; ++q)
+      refine({p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0, q & 2 ? p.t1 : tm, p.depth + 1,
+              stagnant},
+             kept);
+  }
+
+  std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
+
+ private:
+  // The patch's directions y = (side, s, t) in face coordinates, and tau in [0, |y| / R] (far_field.h).
+  struct Direction_box {
+    std::array<Interval, 3> y;
+    Interval tau;
+  };
+
+  Direction_box direction_box(const Patch& p) const {
+    Direction_box box;
+    box.y[p.axis] = Interval(p.side);
+    box.y[(p.axis + 1) % 3] = Interval(p.s0, p.s1);
+    box.y[(p.axis + 2) % 3] = Interval(p.t0, p.t1);
+    const Interval y_norm = interval_sqrt<Kernel>(CGAL::square(box.y[0]) + CGAL::square(box.y[1]) + CGAL::square(box.y[2]));
+    box.tau = Interval(0, (y_norm / Interval(radius_)).sup());
+    return box;
+  }
+
+  // Keeps the sites of `kept` that w may not beat everywhere in the patch's cone outside R.
+  void remove_beaten(const Direction_box& directions, const Site& w, std::vector<Site_index>& kept) const {
+    // The box of v = y - tau (p_w - O) over the patch.
+    const std::array<Interval, 3>& y = directions.y;
+    const Interval& tau = directions.tau;
+    const std::array<Interval, 3> v = {y[0] - tau * (Interval(w.x) - Interval(origin_[0])),
+                                       y[1] - tau * (Interval(w.y) - Interval(origin_[1])),
+                                       y[2] - tau * (Interval(w.z) - Interval(origin_[2]))};
+    const Interval v_norm = interval_sqrt<Kernel>(CGAL::square(v[0]) + CGAL::square(v[1]) + CGAL::square(v[2]));
+    std::size_t end = 0;
+    for (Site_index s : kept) {
+      const Site& c = sites_[s];
+      // (w_w - w_s) |v| + v.(p_w - p_s) > 0 on the whole box: s owns no point of the cone outside R.
+      const Interval margin = (Interval(w.w) - Interval(c.w)) * v_norm + v[0] * (Interval(w.x) - Interval(c.x)) +
+                              v[1] * (Interval(w.y) - Interval(c.y)) + v[2] * (Interval(w.z) - Interval(c.z));
+      if (!(margin.inf() > 0)) kept[end++] = s;
+    }
+    kept.resize(end);
+  }
+
+  // The site of `kept` not yet tried that looks nearest far away in the patch's middle direction y: the
+  // largest y.p + w |y|. Only a choice (plain doubles), compared by differences p_k - p_best so that a
+  // small cluster far from O is still ordered; every removal is certified in remove_beaten().
+  std::optional<Site_index> witness(const Patch& p, const std::vector<Site_index>& kept,
+                                    const std::vector<Site_index>& tried) const {
+    std::array<double, 3> y;
+    y[p.axis] = p.side;
+    y[(p.axis + 1) % 3] = p.s0 + (p.s1 - p.s0) / 2;
+    y[(p.axis + 2) % 3] = p.t0 + (p.t1 - p.t0) / 2;
+    const double y_norm = std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
+    std::optional<Site_index> best;
+    for (Site_index k : kept) {
+      if (std::find(tried.begin(), tried.end(), k) != tried.end()) continue;
+      if (!best) {
+        best = k;
+        continue;
+      }
+      const Site& a = sites_[k];
+      const Site& b = sites_[*best];
+      if (y[0] * (a.x - b.x) + y[1] * (a.y - b.y) + y[2] * (a.z - b.z) + (a.w - b.w) * y_norm > 0) best = k;
+    }
+    return best;
+  }
+
+  // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
+  // of one of their quadruples (sorted; kept is ascending).
+  void record_quadruples(const std::vector<Site_index>& kept) {
+    const std::size_t k = kept.size();
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t b = a + 1; b < k; ++b)
+        for (std::size_t c = b + 1; c < k; ++c)
+          for (std::size_t d = c + 1; d < k; ++d) quadruples_.push_back({kept[a], kept[b], kept[c], kept[d]});
+  }
+
+  const std::vector<Site>& sites_;
+  std::array<double, 3> origin_;
+  double radius_;
+  std::vector<Quadruple_key> quadruples_;
+};
+
+}  // namespace
+
+template <class Kernel>
+Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+                                       const std::array<double, 3>& origin, double radius, const Axis_box& root) {
+  if (escaping.size() < 4) return {};
+  // The six faces of the direction cube are refined independently; neighbouring patches share most of
+  // their quadruples, so those are collected first and each is decided once.
+  std::vector<std::vector<Quadruple_key>> by_face(6);
+  tbb::parallel_for(0, 6, [&](int face) {
+    Far_field<Kernel> field(sites, origin, radius);
+    field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, escaping);
+    by_face[face] = field.take_quadruples();
+  });
+  std::vector<Quadruple_key> quadruples;
+  for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
+  std::sort(quadruples.begin(), quadruples.end());
+  quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
+
+  // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
+  // point there), with its tie set among them.
+  std::vector<std::vector<Found_vertex>> found(quadruples.size());
+  tbb::parallel_for(std::size_t{0}, quadruples.size(), [&](std::size_t q) {
+    const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
+    decide_quadruples<Kernel>(sites, quadruple, escaping,
+                              [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); },
+                              found[q], 0);
+  });
+  // A vertex with five or more tied sites is found from several of their quadruples: kept once.
+  std::vector<Found_vertex> vertices;
+  for (auto& list : found)
+    for (Found_vertex& f : list) vertices.push_back(std::move(f));
+  std::stable_sort(vertices.begin(), vertices.end(), [](const Found_vertex& x, const Found_vertex& y) { return x.first < y.first; });
+  std::vector<Found_vertex> unique;
+  for (std::size_t i = 0; i < vertices.size();) {
+    std::size_t end = i;
+    while (end < vertices.size() && vertices[end].first == vertices[i].first) ++end;
+    const std::size_t group = unique.size();
+    for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
+    i = end;
+  }
+  return {std::move(unique), quadruples.size()};
+}
+
+template Far_field_vertices far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
+                                                          const std::array<double, 3>&, double, const Axis_box&);
+template Far_field_vertices far_vertices<Floating_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
+                                                         const std::array<double, 3>&, double, const Axis_box&);
+
+}  // namespace apollonius

@@ -1,0 +1,37 @@
+// The vertices far outside the sites: those outside the octree's root box R.
+//
+// R contains the ball of radius R about O. A point x outside R is x = O + r y with y on a face of the cube
+// [-1, 1]^3 and r >= R / |y|. For a site w, x - p_w = r v with v = y - tau (p_w - O), tau = 1 / r in
+// [0, |y| / R]. Since |x - p_i| >= e.(x - p_i) for the unit vector e = v / |v|,
+//     d_i(x) - d_w(x) >= w_w - w_i + e.(p_w - p_i),
+// so site i owns no point outside R in a cone of directions y where (w_w - w_i) |v| + v.(p_w - p_i) > 0
+// for every v. Only differences p_w - p_i enter, so a small cluster far from O is separated as well as
+// one at O. The directions are cut into patches (squares on the faces of the cube), and refinement stops
+// at 3 remaining sites (no vertex can lie in the patch's cone outside R) or at a maximum depth, where
+// every vertex outside R in that cone has its tie set among the remaining sites: their quadruples are
+// enumerated and decided exactly against the escaping sites. All bounds use outward-rounded intervals.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "predicates/axis_box.h"
+#include "octree/leaf_decision.h"
+
+namespace apollonius {
+
+struct Far_field_vertices {
+  std::vector<Found_vertex> vertices;
+  std::size_t quadruples = 0;  // distinct quadruples decided exactly
+};
+
+// Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping`
+// must contain every site that owns a point outside the box, and the root box must contain the ball of
+// radius `radius` about `origin`.
+template <class Kernel>
+Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+                                       const std::array<double, 3>& origin, double radius, const Axis_box& root);
+
+}  // namespace apollonius

@@ -1,0 +1,30 @@
+// The exact decision at the end of every subdivision: enumerate the quadruples of a few candidate sites
+// and keep their vertices that lie in the region and that no owner beats. Used by the octree's leaves and
+// by the far field; the brute force keeps its own loop, so that the reference shares no code with them.
+#pragma once
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "predicates/vertex.h"
+
+namespace apollonius {
+
+// A vertex with its tie set (ascending).
+using Found_vertex = std::pair<std::vector<Site_index>, Vertex>;
+
+// Appends every vertex of a quadruple of `candidates` for which `located` holds and no site of `owners` is
+// strictly closer, with its tie set among `candidates` and `owners`. `owners` must contain every site that
+// owns a point where `located` holds; a vertex equal to one already in out[first..] is not appended again.
+// Kernel: kernels.h.
+template <class Kernel>
+void decide_quadruples(const std::vector<Site>& sites, const std::vector<Site_index>& candidates,
+                       const std::vector<Site_index>& owners, const std::function<bool(const Vertex&)>& located,
+                       std::vector<Found_vertex>& out, std::size_t first);
+
+// Appends `found` to `out` unless an equal vertex is already in out[first..].
+template <class Kernel>
+void append_unique(std::vector<Found_vertex>& out, std::size_t first, Found_vertex found);
+
+}  // namespace apollonius

@@ -1,0 +1,116 @@
+#include "octree/octree_diagram.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "octree/box_refinement.h"
+#include "octree/candidate_propagation.h"
+#include "octree/far_field.h"
+#include "predicates/kernels.h"
+#include "diagram/scale_normalization.h"
+#include "octree/seed_partition.h"
+#include "diagram/site_set.h"
+
+namespace apollonius {
+namespace {
+
+// The root box reaches this many times G's size in every direction; beyond it, far_field.h decides.
+constexpr double kFarFieldScale = 32;
+
+// Seconds since the last call (or construction).
+class Lap_timer {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+template <class Kernel>
+Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_options& options) {
+  Octree_statistics statistics;
+  Lap_timer timer;
+  std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites);
+  const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
+  if (active.size() < 4) return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {});
+  const int exponent = normalizing_exponent(input_sites, active);
+  const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
+  const std::vector<Site>& sites = exponent == 0 ? input_sites : normalized;
+
+  const Seed_partition partition(sites, active, kFarFieldScale);
+  statistics.partition_seconds = timer.lap();
+
+  std::vector<std::vector<Found_vertex>> found;
+  std::vector<Found_vertex> vertices;
+  tbb::task_arena arena(std::max(1, options.threads));  // every parallel step runs inside: --threads holds
+  arena.execute([&] {
+    const std::vector<std::vector<Site_index>> candidates =
+        propagate_candidates(sites, active, partition, Kernel::filter_slack);
+    statistics.propagation_seconds = timer.lap();
+
+    // The sites owning a point outside R own a point of its boundary, so they are candidates of the boxes
+    // on it; far_field.h decides the vertices beyond R among them.
+    std::vector<Site_index> escaping;
+    std::vector<std::size_t> seeds;
+    for (std::size_t id = 0; id < partition.id_count(); ++id) {
+      if (candidates[id].size() >= 4) seeds.push_back(id);
+      statistics.seed_candidates += candidates[id].size();
+      if (partition.touches_root_boundary(id))
+        escaping.insert(escaping.end(), candidates[id].begin(), candidates[id].end());
+    }
+    std::sort(escaping.begin(), escaping.end());
+    escaping.erase(std::unique(escaping.begin(), escaping.end()), escaping.end());
+    statistics.seed_boxes = seeds.size();
+    statistics.escaping_sites = escaping.size();
+
+    found.resize(seeds.size());
+    tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box());
+    tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
+      refinement.local().find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+    });
+    for (const Box_refinement<Kernel>& r : refinement) {
+      const Refinement_counts counts = r.counts();
+      statistics.boxes += counts.boxes;
+      statistics.leaves += counts.leaves;
+      statistics.leaf_candidates += counts.leaf_candidates;
+      statistics.quadruples += counts.quadruples;
+      statistics.distinct_quadruples += counts.distinct_quadruples;
+    }
+    statistics.refinement_seconds = timer.lap();
+    Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
+    vertices = std::move(far.vertices);
+    statistics.far_field_quadruples = far.quadruples;
+    statistics.far_field_seconds = timer.lap();
+  });
+  std::size_t total = vertices.size();
+  for (const auto& f : found) total += f.size();
+  vertices.reserve(total);  // exactly: capacity doubling would hold up to twice the vertices at the peak
+  for (auto& f : found) {
+    std::move(f.begin(), f.end(), std::back_inserter(vertices));
+    std::vector<Found_vertex>().swap(f);  // freed now: the vertices are large, and peak memory is reported
+  }
+  if (exponent != 0)
+    for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
+  Diagram diagram = assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices));
+  statistics.assembly_seconds = timer.lap();
+  if (options.statistics) *options.statistics = statistics;
+  return diagram;
+}
+
+}  // namespace
+
+Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options) {
+  return options.arithmetic == Arithmetic::certified ? octree_diagram_with<Certified_kernel>(sites, options)
+                                                     : octree_diagram_with<Floating_kernel>(sites, options);
+}
+
+}  // namespace apollonius

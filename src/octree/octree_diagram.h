@@ -1,0 +1,49 @@
+// Vertex location by adaptive octree subdivision (paper section 5.2), with every decision exact.
+//
+//  0. Sites whose extent is far from 1 are first scaled by a power of two (scale_normalization.h).
+//  1. Seed boxes (seed_partition.h): cubes of side 2^e over the box G of the site centres, and graded
+//     shells of doubling cubes around G out to the root box R, 32 times G's size.
+//  2. Candidates (candidate_propagation.h): the paper's distance propagation finds a few near sites of
+//     each seed box; every site then floods through face neighbours into the boxes where none of those
+//     certainly dominates it.
+//  3. Refinement (box_refinement.h): each seed box and its candidates are split into 8 until at most six
+//     candidates remain (or refining stops helping, on degenerate input); each leaf decides the
+//     quadruples of its candidates exactly, keeping the vertices that lie in it (half-open).
+//  4. Far field (far_field.h): the vertices beyond R, by directions.
+//
+// Completeness. Removing a candidate is certified (centre_expansion.h): the site is strictly farther than
+// another at every point of the box. So every box's candidates include every site that owns a point of
+// it: the seed boxes by the star-shaped argument of candidate_propagation.h, their sub-boxes because
+// removal is certified. A vertex of R lies in exactly one half-open leaf (the upper faces of R are
+// closed), whose candidates include its whole tie set; a vertex outside R is found by far_field.h, from the
+// candidates of the boxes on R's boundary, which include every site owning a point outside R.
+#pragma once
+
+#include <vector>
+
+#include "predicates/axis_box.h"
+#include "diagram/diagram.h"
+
+namespace apollonius {
+
+// What the computation did, for --stats: wall times of the phases and the sizes they worked on.
+struct Octree_statistics {
+  double partition_seconds = 0, propagation_seconds = 0, refinement_seconds = 0, far_field_seconds = 0,
+         assembly_seconds = 0;
+  std::size_t seed_boxes = 0, seed_candidates = 0, escaping_sites = 0, boxes = 0, leaves = 0, leaf_candidates = 0,
+              quadruples = 0, distinct_quadruples = 0, far_field_quadruples = 0;
+};
+
+// Certified: every decision exact (the default). Floating: the same algorithm in plain doubles, no filter
+// and no exact stage (kernels.h), for crosscheck and to measure what exactness costs.
+enum class Arithmetic { certified, floating };
+
+struct Octree_options {
+  int threads = 1;
+  Octree_statistics* statistics = nullptr;  // filled in when not null
+  Arithmetic arithmetic = Arithmetic::certified;
+};
+
+Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});
+
+}  // namespace apollonius

@@ -1,0 +1,73 @@
+#include "reference/brute_force_diagram.h"
+
+#include <algorithm>
+
+#include "predicates/compare_vertices.h"
+#include "predicates/kernels.h"
+#include "diagram/site_set.h"
+#include "predicates/vertex_conflict.h"
+#include "predicates/vertices_of.h"
+
+namespace apollonius {
+namespace {
+
+// The tie set of v if no active site is strictly closer than v's own sites, otherwise nothing.
+// `last_closer` remembers the site that last rejected a vertex and is tried first: it is often closer again.
+bool tie_set_of(const Vertex& v, const std::vector<Site>& sites, const std::vector<Site_index>& active,
+                Site_index& last_closer, std::vector<Site_index>& tie_set) {
+  const auto& own = v.sites();
+  auto is_own = [&](Site_index s) { return std::find(own.begin(), own.end(), s) != own.end(); };
+  if (!is_own(last_closer) && vertex_conflict(v, sites[last_closer]) == Sign::NEGATIVE) return false;
+  tie_set.assign(own.begin(), own.end());
+  for (Site_index s : active) {
+    if (is_own(s)) continue;
+    const Sign sign = vertex_conflict(v, sites[s]);
+    if (sign == Sign::NEGATIVE) {
+      last_closer = s;
+      return false;
+    }
+    if (sign == Sign::ZERO) tie_set.push_back(s);
+  }
+  std::sort(tie_set.begin(), tie_set.end());
+  return true;
+}
+
+}  // namespace
+
+Diagram brute_force_diagram(const std::vector<Site>& sites) {
+  std::vector<Hidden_site> hidden = classify_hidden_sites<Certified_kernel>(sites);
+  const std::vector<Site_index> active = active_sites(sites.size(), hidden);
+  const std::size_t n = active.size();
+
+  // A vertex with a tie set of 5 or more is found once per defining quadruple of its tie set.
+  std::vector<std::pair<std::vector<Site_index>, Vertex>> found;
+  Site_index last_closer = active.empty() ? 0 : active[0];
+  std::vector<Site_index> tie_set;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      for (std::size_t c = b + 1; c < n; ++c)
+        for (std::size_t d = c + 1; d < n; ++d) {
+          const Quadruple q = make_quadruple({active[a], active[b], active[c], active[d]}, sites);
+          for (const Vertex& v : vertices_of(q).vertices)
+            if (tie_set_of(v, sites, active, last_closer, tie_set)) found.emplace_back(tie_set, v);
+        }
+
+  // Keep one vertex per point: the tie set is a function of the point, so equal points share a tie set.
+  std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::pair<std::vector<Site_index>, Vertex>> unique;
+  for (std::size_t i = 0; i < found.size();) {
+    std::size_t end = i;
+    while (end < found.size() && found[end].first == found[i].first) ++end;
+    const std::size_t group_start = unique.size();
+    for (std::size_t k = i; k < end; ++k) {
+      const bool seen = std::any_of(unique.begin() + group_start, unique.end(), [&](const auto& u) {
+        return compare_vertices(u.second, found[k].second) == Sign::ZERO;
+      });
+      if (!seen) unique.push_back(found[k]);
+    }
+    i = end;
+  }
+  return assemble_diagram<Certified_kernel>(sites.size(), std::move(hidden), std::move(unique));
+}
+
+}  // namespace apollonius

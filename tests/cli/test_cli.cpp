@@ -1,0 +1,205 @@
+// The command line: outputs, stdin, --stats, and every kind of bad input (message with file:line and
+// reason, exit code 2, no output file); generate's sites read back exactly as the tests generate them.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "reference/brute_force_diagram.h"
+#include "support/cli_helpers.h"
+#include "io/read_sites.h"
+#include "io/write_vertices.h"
+#include "reference/site_generators.h"
+
+using namespace apollonius;
+using namespace apollonius::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::stringstream content;
+  content << file.rdbuf();
+  return content.str();
+}
+
+// Equal as bit patterns: -0 and 0 differ, unlike with Site's operator==.
+bool same_bits(const std::vector<Site>& a, const std::vector<Site>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Site)) == 0);
+}
+
+const std::string kTetrahedron = "1 1 1 1\n1 -1 -1 1\n-1 1 -1 1\n-1 -1 1 1\n";
+
+}  // namespace
+
+TEST_CASE("vertices writes text to stdout or atomically to -o, and JSON on request") {
+  Scratch scratch;
+  const std::string input = scratch.write("tetra.balls", kTetrahedron);
+  const Cli_result text = run({"vertices", input});
+  CHECK(text.code == EXIT_OK);
+  CHECK(text.out == "0 1 2 3 0 0 0 0.7320508075688773\n");
+
+  const std::string out = scratch.path("out.txt");
+  CHECK(run({"vertices", input, "-o", out}).code == EXIT_OK);
+  std::ifstream written(out);
+  std::stringstream content;
+  content << written.rdbuf();
+  CHECK(content.str() == text.out);
+
+  const Cli_result json = run({"vertices", input, "--format", "json", "--stats"});
+  CHECK(json.code == EXIT_OK);
+  CHECK(json.out.find("\"vertices\"") != std::string::npos);
+  CHECK(json.out.find("\"exact_stages\"") != std::string::npos);
+  CHECK(json.err.find("vertex_conflict") == std::string::npos);  // 4 sites: no conflict tests at all
+  CHECK(json.err.find("vertices_of") != std::string::npos);
+}
+
+TEST_CASE("the binary reads stdin with '-' and exits 0") {
+  Scratch scratch;
+  const std::string input = scratch.write("tetra.balls", kTetrahedron);
+  const auto [code, output] = shell(std::string(APOLLONIUS_BINARY) + " vertices - < '" + input + "'");
+  CHECK(code == 0);
+  CHECK(output == "0 1 2 3 0 0 0 0.7320508075688773\n");
+}
+
+TEST_CASE("bad input: file:line and reason, exit code 2, no output file") {
+  Scratch scratch;
+  struct Case {
+    const char* what;
+    std::string content;  // empty name: a missing file
+    std::string expected_message;
+  };
+  const std::string nul("1 2 3 4\n\0\x01\x02garbage\n", 20);
+  const std::vector<Case> cases = {
+      {"NaN", "1 2 3 4\n1 nan 3 4\n", "bad.txt:2:"},
+      {"inf", "1 2 3 4\n1 2 inf 4\n", "bad.txt:2:"},
+      {"three numbers", "1 2 3 4\n1 2 3\n", "bad.txt:2:"},
+      {"words", "1 2 3 4\nhello world foo bar\n", "bad.txt:2:"},
+      {"empty file", "", "bad.txt"},
+      {"binary garbage", nul, "bad.txt:2:"},
+      {"PDB with no atoms", "HEADER    NOTHING HERE\nEND\n", "bad.txt"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.what);
+    const std::string input = scratch.write("bad.txt", c.content);
+    const std::string out = scratch.path("out.txt");
+    const Cli_result r = run({"vertices", input, "-o", out});
+    CHECK(r.code == EXIT_BAD_INPUT);
+    CHECK(r.err.find(c.expected_message) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+    CHECK(std::distance(fs::directory_iterator(scratch.dir), fs::directory_iterator()) == 1);  // no temporary left
+  }
+  SUBCASE("a missing file") {
+    const Cli_result r = run({"vertices", scratch.path("missing.txt"), "-o", scratch.path("out.txt")});
+    CHECK(r.code == EXIT_BAD_INPUT);
+    CHECK(r.err.find("missing.txt") != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch.path("out.txt")));
+  }
+  SUBCASE("a PDB file with no atoms, by extension") {
+    const std::string input = scratch.write("empty.pdb", "HEADER    NOTHING HERE\nEND\n");
+    const Cli_result r = run({"vertices", input, "-o", scratch.path("out.txt")});
+    CHECK(r.code == EXIT_BAD_INPUT);
+    CHECK(r.err.find("no atoms") != std::string::npos);
+  }
+}
+
+TEST_CASE("usage errors exit 2 with the usage text") {
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {}, {"frobnicate"}, {"vertices"}, {"vertices", "a", "--format", "xml"}, {"vertices", "a", "--algorithm", "magic"},
+           {"vertices", "a", "--bogus"}, {"vertices", "a", "-o"}}) {
+    const Cli_result r = run(args);
+    CHECK(r.code == EXIT_BAD_INPUT);
+    CHECK(r.err.find("usage:") != std::string::npos);
+  }
+  CHECK(run({"--help"}).code == EXIT_OK);
+}
+
+TEST_CASE("an unwritable output path is an error, not a crash") {
+  Scratch scratch;
+  const std::string input = scratch.write("tetra.balls", kTetrahedron);
+  const Cli_result r = run({"vertices", input, "-o", scratch.path("no/such/dir/out.txt")});
+  CHECK(r.code == EXIT_BAD_INPUT);
+  CHECK(r.err.find("out.txt") != std::string::npos);
+}
+
+TEST_CASE("generate writes exactly the sites of generate_sites, which read back bit for bit") {
+  for (const std::string& name : site_family_names()) {
+    for (const std::uint64_t seed : {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{42}, ~std::uint64_t{0}}) {
+      for (const std::size_t n : {1, 7, 40}) {
+        CAPTURE(name);
+        CAPTURE(seed);
+        CAPTURE(n);
+        const Cli_result r = run({"generate", name, "--n", std::to_string(n), "--seed", std::to_string(seed)});
+        REQUIRE(r.code == EXIT_OK);
+        const std::string header = "# apollonius3d generate " + name + " --n " + std::to_string(n) + " --seed " +
+                                   std::to_string(seed) + "\n";
+        CHECK(r.out.compare(0, header.size(), header) == 0);
+        const Site_input input = read_sites_from_text(r.out, "generated", {});
+        CHECK(input.format == Input_format::balls);
+        CHECK(same_bits(input.sites, generate_sites(site_family_from_name(name), n, seed)));
+      }
+    }
+  }
+}
+
+TEST_CASE("vertices of a generated file are the vertices of the generated sites") {
+  Scratch scratch;
+  for (const char* name : {"lattice-noise", "scaled-down", "mixed-sign"}) {
+    CAPTURE(name);
+    const std::string file = scratch.path(std::string(name) + ".balls");
+    REQUIRE(run({"generate", name, "--n", "9", "--seed", "5", "-o", file}).code == EXIT_OK);
+    const Cli_result r = run({"vertices", file, "--algorithm", "brute"});
+    REQUIRE(r.code == EXIT_OK);
+    std::ostringstream expected;
+    write_vertices_text(expected, brute_force_diagram(generate_sites(site_family_from_name(name), 9, 5)));
+    CHECK(!expected.str().empty());
+    CHECK(r.out == expected.str());
+  }
+}
+
+TEST_CASE("generate --list describes every family; bad arguments exit 2 and write nothing") {
+  const Cli_result list = run({"generate", "--list"});
+  CHECK(list.code == EXIT_OK);
+  for (const Site_family_description& d : kSiteFamilies) {
+    CAPTURE(d.name);
+    CHECK(list.out.find(d.name) != std::string::npos);
+    CHECK(list.out.find(d.summary) != std::string::npos);
+  }
+
+  Scratch scratch;
+  const std::string out = scratch.path("sites.balls");
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"generate"},
+           {"generate", "bogus", "--n", "5", "--seed", "1", "-o", out},
+           {"generate", "uniform", "--n", "0", "--seed", "1", "-o", out},
+           {"generate", "uniform", "--n", "1000001", "--seed", "1", "-o", out},
+           {"generate", "uniform", "--n", "5x", "--seed", "1", "-o", out},
+           {"generate", "uniform", "--n", "-5", "--seed", "1", "-o", out},
+           {"generate", "uniform", "--n", "5", "--seed", "-1", "-o", out},
+           {"generate", "uniform", "--n", "5", "--seed", "18446744073709551616", "-o", out},
+           {"generate", "uniform", "--seed", "1", "-o", out},
+           {"generate", "uniform", "--n", "5", "-o", out},
+           {"generate", "uniform", "lattice", "--n", "5", "--seed", "1", "-o", out},
+           {"generate", "--list", "uniform"},
+           {"generate", "uniform", "--n", "5", "--seed", "1", "-o", scratch.path("no/such/dir/sites.balls")}}) {
+    std::string command_line;
+    for (const std::string& a : args) command_line += a + ' ';
+    CAPTURE(command_line);
+    const Cli_result r = run(args);
+    CHECK(r.code == EXIT_BAD_INPUT);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("usage:") != std::string::npos);
+    CHECK(std::distance(fs::directory_iterator(scratch.dir), fs::directory_iterator()) == 0);
+  }
+}
+
+TEST_CASE("generate -o writes the same text as to standard output") {
+  Scratch scratch;
+  const std::string out = scratch.path("sites.balls");
+  const Cli_result to_stdout = run({"generate", "cospherical", "--n", "12", "--seed", "3"});
+  CHECK(run({"generate", "cospherical", "--n", "12", "--seed", "3", "-o", out}).code == EXIT_OK);
+  CHECK(read_file(out) == to_stdout.out);
+}

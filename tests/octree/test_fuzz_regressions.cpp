@@ -1,0 +1,116 @@
+// Inputs that found defects of the octree (most by fuzz_vertices, tests/fuzz), kept in tests/data/regression
+// and run through the normal build: the octree must give the brute force's diagram on each.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "reference/brute_force_diagram.h"
+#include "support/diagram_checks.h"
+#include "io/read_sites.h"
+#include "octree/octree_diagram.h"
+
+using namespace apollonius;
+using namespace apollonius::testing;
+
+namespace {
+
+// Returns the octree's statistics, for the regressions that were about its amount of work.
+Octree_statistics check_octree_equals_brute_force(const std::string& name) {
+  CAPTURE(name);
+  const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name, {}).sites;
+  const Diagram reference = brute_force_diagram(sites);
+  validate_diagram(reference, sites);
+  Octree_statistics statistics;
+  Octree_options options;
+  options.statistics = &statistics;
+  const Diagram octree = octree_diagram(sites, options);
+  REQUIRE(octree.vertices.size() == reference.vertices.size());
+  for (std::size_t i = 0; i < octree.vertices.size(); ++i) {
+    CAPTURE(i);
+    CHECK(octree.vertices[i].tie_set == reference.vertices[i].tie_set);
+    CHECK(octree.vertices[i].rounded == reference.vertices[i].rounded);
+  }
+  CHECK(octree.sites_without_vertex == reference.sites_without_vertex);
+  return statistics;
+}
+
+}  // namespace
+
+// Fixed by running the octree on sites scaled to a moderate extent (scale_normalization.h).
+TEST_CASE("regression: octree_far_field_stalls_beyond_2e154") {
+  check_octree_equals_brute_force("octree_far_field_stalls_beyond_2e154.balls");
+}
+
+// Fixed by deciding each quadruple of the far field once, and by stopping patches that stagnate.
+TEST_CASE("regression: octree_far_field_slow_for_far_vertices") {
+  check_octree_equals_brute_force("octree_far_field_slow_for_far_vertices.balls");
+}
+
+// The octree's root box would exceed the double range; scaled down by 2^1023 it does not.
+TEST_CASE("regression: octree_root_box_beyond_double_range") {
+  check_octree_equals_brute_force("octree_root_box_beyond_double_range.balls");
+}
+
+// fuzz_vertices, with CGAL's assertions on: sites 1e207 (or 5e289) and 1e-323 apart made the far field's
+// bound q_j overflow to inf, and Interval(inf) breaks Interval_nt's precondition. Such a bound now removes
+// nothing.
+TEST_CASE("regression: far_field_spread_overflow") {
+  check_octree_equals_brute_force("far_field_spread_overflow_at_1e207.balls");
+  check_octree_equals_brute_force("far_field_spread_overflow_at_5e289.balls");
+}
+
+// A few small balls and one far away: the removal tests could not tell the small balls apart in boxes far
+// from them, and the octree refined hundreds of thousands of boxes (minutes for the fuzz input). They now
+// take about a thousand boxes, as the same balls without the far one do.
+TEST_CASE("regression: octree_boxes_explode_for_far_balls") {
+  for (const char* name : {"octree_boxes_explode_for_ball_at_1e168.balls", "octree_boxes_explode_for_cluster_and_ball_1e20_away.balls",
+                           "octree_boxes_explode_for_cluster_and_ball_1e300_away.balls"}) {
+    const Octree_statistics statistics = check_octree_equals_brute_force(name);
+    CAPTURE(name);
+    CHECK(statistics.boxes < 5000);
+  }
+}
+
+// 20 small balls and two balls 1e9 away: the far field measured its bound from the centre O of the site
+// box, which could not tell the small balls apart seen from O, so its patches refined to the last depth and
+// enumerated 5,985 distinct quadruples (12 s, 1.7 GB). It now bounds from the witness's own centre and tries more
+// than one witness: 61 quadruples.
+TEST_CASE("regression: far_field_slow_for_cluster_and_two_balls_1e9_away") {
+  const Octree_statistics statistics = check_octree_equals_brute_force("far_field_slow_for_cluster_and_two_balls_1e9_away.balls");
+  CHECK(statistics.far_field_quadruples < 1000);
+}
+
+// Too large for the brute force (C(300, 4) quadruples): every vertex is validated exactly against every
+// site, and Voronota finds the same 870 (bench/README.md, certify on Ext_I_Congruent_300).
+TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {
+  const std::vector<Site> sites =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/octree_stagnation_enumerated_300_cospherical_sites.balls", {})
+          .sites;
+  const Diagram octree = octree_diagram(sites);
+  validate_diagram(octree, sites);
+  CHECK(octree.vertices.size() == 870);
+}
+
+// fuzz_vertices: seven small balls with x_i - w_i = 0 for all of them tie to first order seen from far
+// along -x, and one ball 1e240 away makes the root box that large. The test that settles stagnant boxes tiny
+// against their candidates squared box sizes beyond 1e152 to inf, so those boxes never settled and refined
+// for more than ten minutes. About 500 boxes per level of the 800 from 1e240 down to the balls remain.
+TEST_CASE("regression: octree_tiny_box_test_overflowed_beyond_1e152") {
+  const Octree_statistics statistics = check_octree_equals_brute_force("octree_tiny_box_test_overflowed_beyond_1e152.balls");
+  CHECK(statistics.boxes < 1000000);
+}
+
+// fuzz_vertices: a dozen sites with subnormal coordinates and some near 1e50. The intervals could not place
+// their vertices against the many small boxes near them, and vertex_in_box's exact stage compared in
+// Q(sqrt d) each time: 5.5 s and 6.6 s. It now compares the correctly rounded coordinates first (0.7 s, 1.2 s).
+TEST_CASE("regression: octree_exact_in_box_slow_for_subnormal_sites") {
+  check_octree_equals_brute_force("octree_exact_in_box_slow_for_subnormal_sites.balls");
+  check_octree_equals_brute_force("octree_exact_in_box_slow_for_subnormal_sites_2.balls");
+}
+
+// fuzz_vertices: sites from 1e-158 to 4e291 refine 1.8 million boxes, and the vertices' intervals, wide
+// against the small boxes, failed vertex_in_box 7.7 million times: an exception and an exact stage each,
+// 14 s. Once a vertex's rounded point is known, vertex_in_box's static filter decides by it (1.4 s).
+TEST_CASE("regression: octree_in_box_exceptions_for_sites_from_1e-158_to_4e291") {
+  check_octree_equals_brute_force("octree_in_box_exceptions_for_sites_from_1e-158_to_4e291.balls");
+}

@@ -1,0 +1,114 @@
+// The octree algorithm against the brute-force reference: identical tie sets and printed coordinates on
+// thousands of random and degenerate inputs, on the small vdrc sets, and for every thread count.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "reference/brute_force_diagram.h"
+#include "support/diagram_checks.h"
+#include "io/read_sites.h"
+#include "octree/octree_diagram.h"
+#include "reference/site_generators.h"
+
+using namespace apollonius;
+using namespace apollonius::testing;
+
+namespace {
+
+// Same vertices (tie sets and printed coordinates, in order), same hidden sites, same sites without vertex.
+void check_same(const Diagram& octree, const Diagram& reference) {
+  REQUIRE(octree.vertices.size() == reference.vertices.size());
+  for (std::size_t i = 0; i < octree.vertices.size(); ++i) {
+    CAPTURE(i);
+    CHECK(octree.vertices[i].tie_set == reference.vertices[i].tie_set);
+    CHECK(octree.vertices[i].rounded == reference.vertices[i].rounded);
+  }
+  CHECK(octree.hidden.size() == reference.hidden.size());
+  CHECK(octree.sites_without_vertex == reference.sites_without_vertex);
+}
+
+// APOLLONIUS_DIFFERENTIAL_SEEDS and APOLLONIUS_DIFFERENTIAL_MAX_SITES raise the number of seeds per family
+// and the largest input (default 40 sites) for long runs; APOLLONIUS_DIFFERENTIAL_FAMILIES (names separated
+// by commas) runs only those families, so that a long run can be split across processes.
+std::uint64_t from_environment(const char* name, std::uint64_t default_value) {
+  if (const char* env = std::getenv(name)) return std::strtoull(env, nullptr, 10);
+  return default_value;
+}
+
+bool family_selected(const std::string& name) {
+  const char* env = std::getenv("APOLLONIUS_DIFFERENTIAL_FAMILIES");
+  if (env == nullptr) return true;
+  const std::string list = std::string(",") + env + ",";
+  return list.find("," + name + ",") != std::string::npos;
+}
+
+// Vertices that nearly coincide make the brute force reach its exact stage everywhere, and sites 2^900
+// times apart need about 2^900 times finer boxes: fewer seeds of those families per CI run.
+std::uint64_t seeds_for(Site_family family) {
+  const bool slow = family == Site_family::lattice_noise || family == Site_family::wide_range;
+  return from_environment("APOLLONIUS_DIFFERENTIAL_SEEDS", slow ? 50 : 500);
+}
+
+// The brute force on the sites of the family. The families scaled by 2^+-300 are the uniform family
+// scaled: their reference is the uniform family's diagram, scaled (exact: every value stays a normal
+// double), because the brute force on them reaches its exact stage for every predicate. Scaling
+// invariance itself is tested in test_invariance.
+Diagram reference_diagram(Site_family family, std::size_t n, std::uint64_t seed) {
+  if (family != Site_family::scaled_up && family != Site_family::scaled_down)
+    return brute_force_diagram(generate_sites(family, n, seed));
+  Diagram reference = brute_force_diagram(generate_sites(Site_family::uniform, n, seed));
+  const int exponent = family == Site_family::scaled_up ? 300 : -300;
+  for (Diagram_vertex& v : reference.vertices)
+    for (double& x : v.rounded) x = std::ldexp(x, exponent);
+  return reference;
+}
+
+}  // namespace
+
+TEST_CASE("octree equals brute force on every generator family") {
+  const std::uint64_t max_sites = std::max<std::uint64_t>(5, from_environment("APOLLONIUS_DIFFERENTIAL_MAX_SITES", 40));
+  std::size_t inputs = 0, vertices = 0, expected_inputs = 0;
+  for (const std::string& name : site_family_names()) {
+    if (!family_selected(name)) continue;
+    const Site_family family = site_family_from_name(name);
+    const std::uint64_t seeds = seeds_for(family);
+    expected_inputs += seeds;
+    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+      const std::size_t n = 5 + (seed * 7919) % (max_sites - 4);  // 5 to max_sites sites
+      CAPTURE(name);
+      CAPTURE(seed);
+      CAPTURE(n);
+      const std::vector<Site> sites = generate_sites(family, n, seed);
+      const Diagram reference = reference_diagram(family, n, seed);
+      const Diagram octree = octree_diagram(sites);
+      check_same(octree, reference);
+      ++inputs;
+      vertices += reference.vertices.size();
+    }
+  }
+  MESSAGE(inputs << " inputs of 5 to " << max_sites << " sites, " << vertices << " vertices, all equal");
+  CHECK(inputs == expected_inputs);
+  CHECK(inputs >= std::min<std::uint64_t>(5000, expected_inputs));
+}
+
+TEST_CASE("octree equals brute force on the small vdrc sets") {
+  for (const char* name : {"ANO1_0CONNECT", "ANO3_3CONNECT", "Vis_I_10", "Vis_II_5", "Vis_III_5", "Vis_V_20", "Vis_VII_20"}) {
+    CAPTURE(name);
+    const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", {}).sites;
+    const Diagram octree = octree_diagram(sites);
+    validate_diagram(octree, sites);
+    check_same(octree, brute_force_diagram(sites));
+  }
+}
+
+TEST_CASE("the output does not depend on the number of threads") {
+  const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/pept.balls", {}).sites;
+  const Diagram one = octree_diagram(sites, Octree_options{1});
+  validate_diagram(one, sites);
+  for (int threads : {2, 3, 8}) {
+    CAPTURE(threads);
+    check_same(octree_diagram(sites, Octree_options{threads}), one);
+  }
+}

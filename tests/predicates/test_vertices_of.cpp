@@ -1,0 +1,201 @@
+// Hand-built quadruples with known answers for the vertex predicates.
+#include <doctest/doctest.h>
+
+#include <limits>
+#include <random>
+
+#include "predicates/compare_vertices.h"
+#include "support/exact_checks.h"
+#include "predicates/is_hidden.h"
+#include "predicates/rounding_guard.h"
+#include "reference/site_generators.h"
+#include "predicates/vertex_conflict.h"
+#include "predicates/vertex_rounding.h"
+#include "predicates/vertices_of.h"
+
+using namespace apollonius;
+using namespace apollonius::testing;
+
+namespace {
+
+Quadruple_vertices vertices_of_sites(const std::vector<Site>& s) { return vertices_of(make_quadruple({0, 1, 2, 3}, s)); }
+
+// Each own site of a vertex is exactly at distance r (an identity of the construction, checked exactly).
+void check_own_sites_tie(const Vertex& v) {
+  for (const Site& s : v.quadruple().sites) CHECK(vertex_conflict(v, s) == Sign::ZERO);
+}
+
+}  // namespace
+
+TEST_CASE("four equal balls on a regular tetrahedron: one vertex at the centre, r = sqrt(3) - 1") {
+  const std::vector<Site> s = {{1, 1, 1, 1}, {1, -1, -1, 1}, {-1, 1, -1, 1}, {-1, -1, 1, 1}};
+  const Quadruple_vertices result = vertices_of_sites(s);
+  REQUIRE(result.vertices.size() == 1);
+  const auto p = exact_point(result.vertices[0]);
+  for (int j = 0; j < 3; ++j) CHECK(exactly_equal(p[j], dyadic(0)));
+  CHECK(exactly_equal(p[3], root_number(-1, 1, 3, 1)));
+  CHECK(to_nearest_double(p[3]) == 0.7320508075688773);  // sqrt(3) - 1 = 0.73205080756887729352...
+  check_own_sites_tie(result.vertices[0]);
+}
+
+TEST_CASE("four coplanar sites: two mirror vertices") {
+  const std::vector<Site> s = {{0, 0, 0, 1}, {4, 0, 0, 1}, {0, 4, 0, 1}, {3, 3, 0, 0.5}};
+  const Quadruple_vertices result = vertices_of_sites(s);
+  CHECK_FALSE(result.rank_deficient);
+  REQUIRE(result.vertices.size() == 2);
+  const auto p = exact_point(result.vertices[0]), q = exact_point(result.vertices[1]);
+  CHECK(exactly_equal(p[0], q[0]));
+  CHECK(exactly_equal(p[1], q[1]));
+  CHECK(exactly_equal(p[3], q[3]));
+  CHECK(exactly_equal(p[2], Root_number<Exact>{-q[2].a, -q[2].b, q[2].d, q[2].denominator}));
+  CHECK(compare(p[2], dyadic(0)) != Sign::ZERO);
+  CHECK(compare_vertices(result.vertices[0], result.vertices[1]) != Sign::ZERO);
+  for (const Vertex& v : result.vertices) check_own_sites_tie(v);
+}
+
+TEST_CASE("tangency with discriminant 0: one vertex, in the plane of four coplanar sites") {
+  // Every site is at weighted distance 2 from the origin: |p| - w = 2, and the tangent sphere touches the plane.
+  const std::vector<Site> s = {{3, 0, 0, 1}, {0, 5, 0, 3}, {-4, 0, 0, 2}, {0, -6, 0, 4}};
+  const Quadruple_line<Exact> line = quadruple_line<Exact>(make_quadruple({0, 1, 2, 3}, s).sites);
+  CHECK(certain_sign(line.discriminant) == Sign::ZERO);
+  const Quadruple_vertices result = vertices_of_sites(s);
+  REQUIRE(result.vertices.size() == 1);
+  CHECK(result.vertices[0].root() == Root::SINGLE);
+  const auto p = exact_point(result.vertices[0]);
+  for (int j = 0; j < 3; ++j) CHECK(exactly_equal(p[j], dyadic(0)));
+  CHECK(exactly_equal(p[3], dyadic(2)));
+}
+
+TEST_CASE("a non-coplanar quadruple with two valid roots") {
+  const std::vector<Site> s = {{0, 0, 0, 1}, {4, 0, 0, 1}, {0, 4, 0, 1}, {3, 3, 0.25, 0.5}};
+  const Quadruple_line<Exact> line = quadruple_line<Exact>(make_quadruple({0, 1, 2, 3}, s).sites);
+  CHECK(line.pivot == 3);  // n_3 = det(a_1, a_2, a_3) != 0: not coplanar
+  const Quadruple_vertices result = vertices_of_sites(s);
+  REQUIRE(result.vertices.size() == 2);
+  CHECK(result.vertices[0].root() == Root::MINUS);
+  CHECK(result.vertices[1].root() == Root::PLUS);
+  for (const Vertex& v : result.vertices) {
+    check_own_sites_tie(v);
+    const auto p = rounded_coordinates(v);
+    for (const Site& site : s) CHECK(std::fabs(static_cast<double>(rounded_residual(p, site))) < 1e-12);
+  }
+}
+
+TEST_CASE("a root with r + w < 0 for one of its sites is not a vertex") {
+  // Equal weights: the root with negative r + w (the circumcentre at distance -|u|) is rejected.
+  const std::vector<Site> s = {{0, 0, 0, 1}, {2, 0, 0, 1}, {0, 2, 0, 1}, {0, 0, 2, 1}};
+  const Quadruple_vertices result = vertices_of_sites(s);
+  REQUIRE(result.vertices.size() == 1);
+  const auto p = exact_point(result.vertices[0]);
+  for (int j = 0; j < 3; ++j) CHECK(exactly_equal(p[j], dyadic(1)));
+  CHECK(exactly_equal(p[3], root_number(-1, 1, 3, 1)));
+}
+
+TEST_CASE("rank-deficient quadruples have no isolated vertex") {
+  SUBCASE("collinear centres") {
+    const Quadruple_vertices r = vertices_of_sites({{0, 0, 0, 1}, {1, 0, 0, 1}, {3, 0, 0, 2}, {7, 0, 0, 1}});
+    CHECK(r.rank_deficient);
+    CHECK(r.vertices.empty());
+  }
+  SUBCASE("coplanar cocircular centres with equal weights: the equidistant set is the circle's axis") {
+    const Quadruple_vertices r = vertices_of_sites({{5, 0, 0, 1}, {0, 5, 0, 1}, {-3, 4, 0, 1}, {4, -3, 0, 1}});
+    CHECK(r.rank_deficient);
+    CHECK(r.vertices.empty());
+  }
+  SUBCASE("coplanar centres, weights an affine function of the position") {
+    const Quadruple_vertices r = vertices_of_sites({{0, 0, 0, 1}, {1, 0, 0, 1.5}, {0, 1, 0, 1.25}, {2, 3, 0, 2.75}});
+    CHECK(r.rank_deficient);
+  }
+}
+
+TEST_CASE("vertex_conflict decides closer, tied and farther sites exactly") {
+  const std::vector<Site> s = {{1, 1, 1, 1}, {1, -1, -1, 1}, {-1, 1, -1, 1}, {-1, -1, 1, 1}};
+  const Vertex v = vertices_of_sites(s).vertices.at(0);  // centre 0, r = sqrt 3 - 1, weighted distance to sites
+  // A site at distance sqrt(3) from the centre ties when w = 1, is closer when w > 1, farther when w < 1.
+  CHECK(vertex_conflict(v, Site{1, -1, 1, 1}) == Sign::ZERO);
+  CHECK(vertex_conflict(v, Site{1, -1, 1, 1.0000000000000002}) == Sign::NEGATIVE);
+  CHECK(vertex_conflict(v, Site{1, -1, 1, 0.99999999999999989}) == Sign::POSITIVE);
+  // r + w_s < 0: a ball of very negative weight can never be closer.
+  CHECK(vertex_conflict(v, Site{0, 0, 0, -5}) == Sign::POSITIVE);
+  // A site centred at the vertex is at weighted distance -w: farther than r = 0.732... for w = -0.75,
+  // closer for w = -0.5.
+  CHECK(vertex_conflict(v, Site{0, 0, 0, -0.75}) == Sign::POSITIVE);
+  CHECK(vertex_conflict(v, Site{0, 0, 0, -0.5}) == Sign::NEGATIVE);
+}
+
+TEST_CASE("is_hidden: containment, internal tangency, duplicates") {
+  const Site big{0, 0, 0, 3}, inside{1, 0, 0, 1}, tangent_inside{2, 0, 0, 1}, outside{2.5, 0, 0, 1};
+  CHECK(is_hidden(inside, 1, big, 0));
+  CHECK(is_hidden(tangent_inside, 1, big, 0));
+  CHECK_FALSE(is_hidden(outside, 1, big, 0));
+  CHECK_FALSE(is_hidden(big, 0, inside, 1));
+  CHECK(is_hidden(big, 5, big, 2));
+  CHECK_FALSE(is_hidden(big, 2, big, 5));
+  // Tangent inside only up to the last bit: 2 + 2^-51 is outside.
+  CHECK_FALSE(is_hidden(Site{2.0000000000000004, 0, 0, 1}, 1, big, 0));
+}
+
+TEST_CASE("enclosing_interval contains exact values beyond the double range") {
+  Rounding_guard guard;
+  const Exact huge = Exact(std::ldexp(1.5, 1000)) * Exact(std::ldexp(1.0, 1000));
+  const Exact tiny = Exact(std::ldexp(1.5, -1000)) * Exact(std::ldexp(1.0, -1000));
+  const Interval h = enclosing_interval(huge), t = enclosing_interval(tiny), n = enclosing_interval(-huge);
+  CHECK(h.inf() == std::numeric_limits<double>::max());
+  CHECK(std::isinf(h.sup()));
+  CHECK(t.inf() == 0);
+  CHECK(t.sup() > 0);
+  CHECK(std::isinf(n.inf()));
+  CHECK(n.sup() == -std::numeric_limits<double>::max());
+  CHECK_THROWS_AS(certain_sign(t - Interval(0)), Uncertain_sign);
+  const Interval third = enclosing_interval(Exact(1) * Exact(0.1));
+  CHECK(third.inf() < 0.1);
+  CHECK(third.sup() > 0.1);
+}
+
+// The a priori bound of the first stage (double_with_magnitude.h) against the exact line, on every value
+// quadruple_line computes, for quadruples of every generator family: lattices and cospherical sites cancel
+// to exact zeros, scaled families sit at 2^+-300.
+TEST_CASE("the first stage's a priori bounds hold on every value of the line") {
+  std::size_t checked = 0;
+  for (const std::string& name : site_family_names()) {
+    for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+      CAPTURE(name);
+      CAPTURE(seed);
+      const std::vector<Site> sites = generate_sites(site_family_from_name(name), 12, seed);
+      std::mt19937_64 random(seed);
+      for (int trial = 0; trial < 40; ++trial) {
+        std::array<Site_index, 4> pick{};
+        for (Site_index& i : pick) i = static_cast<Site_index>(random() % sites.size());
+        std::sort(pick.begin(), pick.end());
+        if (std::adjacent_find(pick.begin(), pick.end()) != pick.end()) continue;
+        const Quadruple q = make_quadruple(pick, sites);
+        const Quadruple_line<Exact> exact = quadruple_line<Exact>(q.sites);
+        Quadruple_line<Double_with_magnitude> fast;
+        try {
+          fast = quadruple_line<Double_with_magnitude>(q.sites);
+        } catch (const Uncertain_sign&) {
+          continue;  // no certain pivot: the next stage decides
+        }
+        REQUIRE(fast.pivot == exact.pivot);
+        const auto within = [&](const Double_with_magnitude& x, const Exact& e) {
+          if (!std::isfinite(x.error_bound())) return;  // overflowed: no sign is ever certain
+          CAPTURE(x.value);
+          CAPTURE(x.magnitude);
+          const Exact distance = Exact(x.value) - e;
+          CHECK(CGAL::abs(distance) <= Exact(x.error_bound()));
+          ++checked;
+        };
+        for (int j = 0; j < 4; ++j) within(fast.n[j], exact.n[j]);
+        if (fast.pivot < 0) continue;
+        for (int j = 0; j < 4; ++j) within(fast.Q[j], exact.Q[j]);
+        within(fast.A, exact.A);
+        within(fast.B, exact.B);
+        within(fast.C, exact.C);
+        within(fast.discriminant, exact.discriminant);
+      }
+    }
+  }
+  MESSAGE(checked << " values within their bound");
+  CHECK(checked > 100000);
+}
+
