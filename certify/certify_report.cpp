@@ -3,40 +3,47 @@
 #include <cstdio>
 
 #include "io/json_output.h"
+#include "io/round_trip.h"
 
 namespace apollonius {
 namespace {
 
-std::string json_vertex(const Diagram& diagram, std::size_t v) {
+Json json_vertex(const Diagram& diagram, std::size_t v) {
   const Diagram_vertex& vertex = diagram.vertices[v];
-  return "{\"index\": " + std::to_string(v) + ", \"sites\": " + json_array(vertex.tie_set) + ", " +
-         json_point_members(vertex.rounded) + "}";
+  Json json{{"index", v}, {"sites", vertex.tie_set}};
+  add_point_members(json, vertex.rounded);
+  return json;
 }
 
-std::string json_claim(const Certify_report& report, std::size_t c) {
+Json json_claim(const Certify_report& report, std::size_t c) {
   const Claimed_vertex& claim = report.claims.vertices[c];
   const Claim_judgement& j = report.certification.claims[c];
-  std::string text = "{\"claim\": " + std::to_string(c) + ", \"line\": " + std::to_string(claim.line) +
-                     ", \"sites\": " + json_array(claim.sites) + ", " + json_point_members(claim.point) +
-                     ", \"verdict\": " + json_string(name_of(j.verdict)) +
-                     ", \"discrepancy\": " + (is_discrepancy(j.verdict, report.strict) ? "true" : "false");
-  if (j.verdict == Verdict::not_a_vertex) text += ", \"reason\": " + json_string(name_of(j.reason));
+  Json json{{"claim", c}, {"line", claim.line}, {"sites", claim.sites}};
+  add_point_members(json, claim.point);
+  json["verdict"] = name_of(j.verdict);
+  json["discrepancy"] = is_discrepancy(j.verdict, report.strict);
+  if (j.verdict == Verdict::not_a_vertex) json["reason"] = name_of(j.reason);
   if (j.vertex) {
-    text += ", \"vertex\": " + json_vertex(report.diagram, *j.vertex) + ", \"absolute_error\": " +
-            json_number(j.error.absolute) + ", \"relative_error\": " + json_number(j.error.relative);
+    json["vertex"] = json_vertex(report.diagram, *j.vertex);
+    json["absolute_error"] = json_number(j.error.absolute);
+    json["relative_error"] = json_number(j.error.relative);
   }
   if (j.earlier_claim) {
-    text += ", \"earlier_claim\": " + std::to_string(*j.earlier_claim) +
-            ", \"earlier_line\": " + std::to_string(report.claims.vertices[*j.earlier_claim].line);
+    json["earlier_claim"] = *j.earlier_claim;
+    json["earlier_line"] = report.claims.vertices[*j.earlier_claim].line;
   }
   if (j.point) {
-    text += ", \"point\": {" + json_point_members(*j.point) + "}, \"closer_site\": " + std::to_string(j.closer_site);
+    Json point = Json::object();
+    add_point_members(point, *j.point);
+    json["point"] = point;
+    json["closer_site"] = j.closer_site;
   }
   if (j.hidden) {
-    text += ", \"hidden_site\": " + std::to_string(j.hidden->site) + ", \"hidden_by\": " +
-            std::to_string(j.hidden->hidden_by) + ", \"duplicate\": " + (j.hidden->duplicate ? "true" : "false");
+    json["hidden_site"] = j.hidden->site;
+    json["hidden_by"] = j.hidden->hidden_by;
+    json["duplicate"] = j.hidden->duplicate;
   }
-  return text + "}";
+  return json;
 }
 
 std::string sites_text(const std::vector<Site_index>& sites) {
@@ -110,28 +117,33 @@ std::string describe_claim(const Certify_report& report, std::size_t c) {
 void write_certify_report_json(std::ostream& out, const Certify_report& report) {
   const Verdict_counts counts = count_verdicts(report.certification, report.strict);
   const Coordinate_tolerance& tolerance = report.certification.tolerance;
-  out << "{\n  \"format\": \"apollonius3d-certify-report\",\n  \"version\": 1"
-      << ",\n  \"input\": " << json_string(report.input_name) << ",\n  \"sites\": " << report.diagram.site_count
-      << ",\n  \"hidden_sites\": " << report.diagram.hidden.size()
-      << ",\n  \"certified_vertices\": " << report.diagram.vertices.size()
-      << ",\n  \"claim\": " << json_string(report.claim_name)
-      << ",\n  \"claim_format\": " << json_string(name_of(report.claims.format))
-      << ",\n  \"tolerance\": {\"relative\": " << json_number(tolerance.relative)
-      << ", \"scale\": " << json_number(tolerance.scale) << "}"
-      << ",\n  \"strict\": " << (report.strict ? "true" : "false")
-      << ",\n  \"counts\": {\"claims\": " << counts.claims << ", \"confirmed\": " << counts.confirmed
-      << ", \"surplus\": " << counts.surplus << ", \"duplicate\": " << counts.duplicate
-      << ", \"coordinates_off\": " << counts.coordinates_off << ", \"wrong_root\": " << counts.wrong_root
-      << ", \"not_a_vertex\": " << counts.not_a_vertex << ", \"missing\": " << counts.missing
-      << ", \"discrepancies\": " << counts.discrepancies
-      << ", \"largest_absolute_error\": " << json_number(counts.largest_error.absolute)
-      << ", \"largest_relative_error\": " << json_number(counts.largest_error.relative) << "}"
-      << ",\n  \"claims\": ";
-  write_json_lines(out, report.claims.vertices.size(), [&](std::size_t c) { return json_claim(report, c); });
-  out << ",\n  \"missing\": ";
-  const std::vector<std::size_t>& missing = report.certification.missing;
-  write_json_lines(out, missing.size(), [&](std::size_t i) { return json_vertex(report.diagram, missing[i]); });
-  out << "\n}\n";
+  Json document{{"format", "apollonius3d-certify-report"},
+                {"version", 1},
+                {"input", report.input_name},
+                {"sites", report.diagram.site_count},
+                {"hidden_sites", report.diagram.hidden.size()},
+                {"certified_vertices", report.diagram.vertices.size()},
+                {"claim", report.claim_name},
+                {"claim_format", name_of(report.claims.format)},
+                {"tolerance", {{"relative", json_number(tolerance.relative)}, {"scale", json_number(tolerance.scale)}}},
+                {"strict", report.strict},
+                {"counts",
+                 {{"claims", counts.claims},
+                  {"confirmed", counts.confirmed},
+                  {"surplus", counts.surplus},
+                  {"duplicate", counts.duplicate},
+                  {"coordinates_off", counts.coordinates_off},
+                  {"wrong_root", counts.wrong_root},
+                  {"not_a_vertex", counts.not_a_vertex},
+                  {"missing", counts.missing},
+                  {"discrepancies", counts.discrepancies},
+                  {"largest_absolute_error", json_number(counts.largest_error.absolute)},
+                  {"largest_relative_error", json_number(counts.largest_error.relative)}}}};
+  Json& claims = document["claims"] = Json::array();
+  for (std::size_t c = 0; c < report.claims.vertices.size(); ++c) claims.push_back(json_claim(report, c));
+  Json& missing = document["missing"] = Json::array();
+  for (const std::size_t v : report.certification.missing) missing.push_back(json_vertex(report.diagram, v));
+  write_json_document(out, document);
 }
 
 void write_certify_summary(std::ostream& out, const Certify_report& report, std::size_t listed) {

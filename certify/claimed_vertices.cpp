@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "io/input_error.h"
-#include "io/json_value.h"
+#include "io/json_input.h"
 #include "io/text_input.h"
 
 namespace apollonius {
@@ -76,52 +76,58 @@ std::vector<Claimed_vertex> read_voronota(const std::vector<Text_line>& lines, s
 }
 
 // A JSON number, or the string "inf" or "-inf" that our writer prints for an overflowing coordinate.
-double json_coordinate(const Json_value& vertex, const char* key, const std::string& name) {
-  const Json_value* value = vertex.member(key);
-  if (value == nullptr) throw Input_error(name, vertex.line, std::string("vertex without \"") + key + "\"");
-  if (value->kind == Json_value::Kind::string && (value->text == "inf" || value->text == "-inf"))
-    return value->text == "inf" ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-  if (value->kind != Json_value::Kind::number)
-    throw Input_error(name, value->line, std::string("\"") + key + "\" must be a number, not " + describe(value->kind));
-  return parse_number(value->text, name, value->line);
+double json_coordinate(const Json_node& vertex, const char* key, const std::string& name) {
+  const std::optional<Json_node> value = vertex.member(key);
+  if (!value) throw Input_error(name, vertex.line(), std::string("vertex without \"") + key + "\"");
+  const nlohmann::json& v = value->value();
+  if (v.is_string() && (v == "inf" || v == "-inf"))
+    return v == "inf" ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+  if (!v.is_number())
+    throw Input_error(name, value->line(), std::string("\"") + key + "\" must be a number, not " + value->kind());
+  return v.get<double>();
+}
+
+// A site index: a JSON integer from 0 to the largest Site_index.
+Site_index json_site_index(const Json_node& site, const std::string& name) {
+  const nlohmann::json& v = site.value();
+  if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::uint64_t>() > std::numeric_limits<Site_index>::max())
+    throw Input_error(name, site.line(), "not a site index: " + v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  return static_cast<Site_index>(v.get<std::uint64_t>());
 }
 
 std::vector<Claimed_vertex> read_json(const std::string& content, std::size_t site_count, const std::string& name) {
-  const Json_value document = parse_json(content, name);
-  if (document.kind != Json_value::Kind::object)
-    throw Input_error(name, document.line, std::string("expected a JSON object, found ") + describe(document.kind));
-  if (const Json_value* format = document.member("format");
-      format != nullptr && !(format->kind == Json_value::Kind::string && format->text == kJsonFormatName))
-    throw Input_error(name, format->line, std::string("\"format\" must be \"") + kJsonFormatName + "\"");
-  if (const Json_value* sites = document.member("sites"); sites != nullptr) {
-    std::size_t count = 0;
-    if (sites->kind != Json_value::Kind::number || !parse_integer(sites->text, count))
-      throw Input_error(name, sites->line, "\"sites\" must be a site count");
+  const Json_document parsed = parse_json(content, name);
+  const Json_node document(parsed.value, parsed.lines);
+  if (!document.value().is_object())
+    throw Input_error(name, document.line(), std::string("expected a JSON object, found ") + document.kind());
+  if (const std::optional<Json_node> format = document.member("format");
+      format && format->value() != kJsonFormatName)
+    throw Input_error(name, format->line(), std::string("\"format\" must be \"") + kJsonFormatName + "\"");
+  if (const std::optional<Json_node> sites = document.member("sites")) {
+    if (!sites->value().is_number_unsigned()) throw Input_error(name, sites->line(), "\"sites\" must be a site count");
+    const std::uint64_t count = sites->value().get<std::uint64_t>();
     if (count != site_count)
-      throw Input_error(name, sites->line, "this vertex list is for " + std::to_string(count) +
-                                               " sites, the input has " + std::to_string(site_count));
+      throw Input_error(name, sites->line(), "this vertex list is for " + std::to_string(count) +
+                                                 " sites, the input has " + std::to_string(site_count));
   }
-  const Json_value* vertices = document.member("vertices");
-  if (vertices == nullptr) throw Input_error(name, document.line, "no \"vertices\" array");
-  if (vertices->kind != Json_value::Kind::array)
-    throw Input_error(name, vertices->line, std::string("\"vertices\" must be an array, not ") + describe(vertices->kind));
+  const std::optional<Json_node> vertices = document.member("vertices");
+  if (!vertices) throw Input_error(name, document.line(), "no \"vertices\" array");
+  if (!vertices->value().is_array())
+    throw Input_error(name, vertices->line(), std::string("\"vertices\" must be an array, not ") + vertices->kind());
 
   std::vector<Claimed_vertex> claims;
-  for (const Json_value& vertex : vertices->elements) {
-    if (vertex.kind != Json_value::Kind::object)
-      throw Input_error(name, vertex.line, std::string("a vertex must be an object, not ") + describe(vertex.kind));
+  for (std::size_t i = 0; i < vertices->size(); ++i) {
+    const Json_node vertex = vertices->element(i);
+    if (!vertex.value().is_object())
+      throw Input_error(name, vertex.line(), std::string("a vertex must be an object, not ") + vertex.kind());
     Claimed_vertex claim;
-    claim.line = vertex.line;
-    const Json_value* sites = vertex.member("sites");
-    if (sites == nullptr || sites->kind != Json_value::Kind::array)
-      throw Input_error(name, vertex.line, "vertex without a \"sites\" array");
-    for (const Json_value& site : sites->elements) {
-      if (site.kind != Json_value::Kind::number) throw Input_error(name, site.line, "not a site index: " + std::string(describe(site.kind)));
-      claim.sites.push_back(parse_site_index(site.text, name, site.line));
-    }
+    claim.line = vertex.line();
+    const std::optional<Json_node> sites = vertex.member("sites");
+    if (!sites || !sites->value().is_array()) throw Input_error(name, vertex.line(), "vertex without a \"sites\" array");
+    for (std::size_t k = 0; k < sites->size(); ++k) claim.sites.push_back(json_site_index(sites->element(k), name));
     const char* const keys[4] = {"x", "y", "z", "r"};
     for (int j = 0; j < 4; ++j) claim.point[j] = json_coordinate(vertex, keys[j], name);
-    check_sites(claim.sites, site_count, name, vertex.line);
+    check_sites(claim.sites, site_count, name, vertex.line());
     claims.push_back(std::move(claim));
   }
   return claims;
@@ -157,6 +163,8 @@ Claim_format detect_claim_format(const std::string& content) {
 
 Claimed_vertex_list read_claimed_vertices(const std::string& content, const std::string& name,
                                           std::optional<Claim_format> format, std::size_t site_count) {
+  if (starts_with_byte_order_mark(content))
+    return read_claimed_vertices(content.substr(byte_order_mark.size()), name, format, site_count);
   reject_binary_data(content, name);
   Claimed_vertex_list list;
   list.format = format ? *format : detect_claim_format(content);

@@ -1,14 +1,14 @@
-// The command line (SPEC section 4). Exit codes: 0 ok, 1 discrepancies (certify), 2 usage or input
-// error, 3 internal error.
+// The command line of the apollonius3d binary (docs/contract.md): one subcommand per job. Exit codes: 0 ok,
+// 1 discrepancies (certify, crosscheck), 2 usage or input error, 3 internal error.
 #pragma once
 
 #include <iosfwd>
 #include <string>
 #include <vector>
 
-namespace apollonius {
+#include "cli/command.h"
 
-enum Exit_code : int { EXIT_OK = 0, EXIT_DISCREPANCIES = 1, EXIT_BAD_INPUT = 2, EXIT_INTERNAL_ERROR = 3 };
+namespace apollonius {
 
 // Runs one command; `arguments` excludes the program name. Output that is not a file goes to `out`,
 // messages to `err`.

@@ -1,16 +1,11 @@
-// `apollonius3d crosscheck INPUT ...`: the floating path against the certified one (crosscheck.h).
+// `apollonius3d crosscheck INPUT ...`: the octree certified against itself in plain doubles
+// (docs/contract.md).
 #pragma once
 
-#include <ostream>
-#include <string>
-#include <vector>
+#include "cli/command.h"
 
 namespace apollonius {
 
-extern const char* const crosscheck_usage;
-
-// args[0] is "crosscheck". Disagreements go to out, a summary to err; returns 0 without disagreements,
-// 1 with. Throws Usage_error or Input_error for bad arguments or input.
-int run_crosscheck(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+Command_run add_crosscheck_command(CLI::App& app);
 
 }  // namespace apollonius

@@ -1,71 +1,30 @@
 #include "cli/generate_command.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <limits>
-#include <optional>
+#include <memory>
+#include <stdexcept>
 
-#include "cli/arguments.h"
 #include "io/write_sites.h"
 #include "reference/site_generators.h"
 
 namespace apollonius {
-
-const char* const generate_usage =
-    "usage: apollonius3d generate KIND --n N --seed S [-o OUT]\n"
-    "       apollonius3d generate --list\n"
-    "  Writes N sites (1 to 1000000) of the reproducible family KIND from the seed S (0 to 2^64 - 1) as\n"
-    "  balls text 'x y z w', each number printed round-trip: the very sites the tests generate. --list\n"
-    "  names and describes every KIND.\n";
-
 namespace {
 
 // A bound on what a command line can ask for: a million sites are about 15 MB of text and seconds of work.
 constexpr std::uint64_t kMaxGeneratedSites = 1000000;
 
 struct Generate_command {
-  bool list = false;  // --list: the families and their descriptions, nothing generated
-  Site_family family = Site_family::uniform;
+  bool list = false;  // the families and their descriptions, nothing generated
+  std::string family;
   std::uint64_t count = 0;
   std::uint64_t seed = 0;
-  std::string output;  // empty: standard output
+  std::string output;
+  CLI::Option* count_option = nullptr;
+  CLI::Option* seed_option = nullptr;
 };
-
-Generate_command parse_generate(const std::vector<std::string>& args) {
-  Generate_command command;
-  std::optional<std::string> family, count, seed;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--list") {
-      if (args.size() != 2) throw Usage_error("generate --list takes no other arguments");
-      command.list = true;
-    } else if (a == "-o" || a == "--output") {
-      command.output = option_value(args, i);
-    } else if (a == "--n") {
-      count = option_value(args, i);
-    } else if (a == "--seed") {
-      seed = option_value(args, i);
-    } else if (a.size() > 1 && a[0] == '-') {
-      throw Usage_error("unknown option '" + a + "'");
-    } else if (!family) {
-      family = a;
-    } else {
-      throw Usage_error("unexpected argument '" + a + "'");
-    }
-  }
-  if (command.list) return command;
-  if (!family) throw Usage_error("missing KIND (generate --list names them)");
-  if (!count) throw Usage_error("missing --n N");
-  if (!seed) throw Usage_error("missing --seed S");
-  try {
-    command.family = site_family_from_name(*family);
-  } catch (const std::invalid_argument& e) {
-    throw Usage_error(std::string(e.what()) + " (generate --list names them)");
-  }
-  command.count = parse_option_integer(*count, "--n", 1, kMaxGeneratedSites);  // the reader refuses an empty input
-  command.seed = parse_option_integer(*seed, "--seed", 0, std::numeric_limits<std::uint64_t>::max());
-  return command;
-}
 
 void print_site_families(std::ostream& out) {
   std::size_t width = 0;
@@ -74,19 +33,49 @@ void print_site_families(std::ostream& out) {
     out << d.name << std::string(width + 2 - std::strlen(d.name), ' ') << d.summary << '\n';
 }
 
+int run(const Generate_command& command, std::ostream& out) {
+  if (command.list) {
+    if (!command.family.empty() || command.count_option->count() > 0 || command.seed_option->count() > 0 ||
+        !command.output.empty())
+      throw Usage_error("generate --list takes no other arguments");
+    print_site_families(out);
+    return EXIT_OK;
+  }
+  if (command.family.empty()) throw Usage_error("missing KIND (generate --list names them)");
+  if (command.count_option->count() == 0) throw Usage_error("missing --n N");
+  if (command.seed_option->count() == 0) throw Usage_error("missing --seed S");
+  Site_family family;
+  try {
+    family = site_family_from_name(command.family);
+  } catch (const std::invalid_argument& e) {
+    throw Usage_error(std::string(e.what()) + " (generate --list names them)");
+  }
+  const std::vector<Site> sites = generate_sites(family, command.count, command.seed);
+  const std::string provenance = "apollonius3d generate " + command.family + " --n " + std::to_string(command.count) +
+                                 " --seed " + std::to_string(command.seed);
+  write_command_output(command.output, out, [&](std::ostream& o) { write_sites_text(o, sites, provenance); });
+  return EXIT_OK;
+}
+
 }  // namespace
 
-int run_generate(const std::vector<std::string>& args, std::ostream& out) {
-  const Generate_command command = parse_generate(args);
-  if (command.list) {
-    print_site_families(out);
-    return 0;
-  }
-  const std::vector<Site> sites = generate_sites(command.family, command.count, command.seed);
-  const std::string provenance = std::string("apollonius3d generate ") + name_of(command.family) + " --n " +
-                                 std::to_string(command.count) + " --seed " + std::to_string(command.seed);
-  write_command_output(command.output, out, [&](std::ostream& o) { write_sites_text(o, sites, provenance); });
-  return 0;
+Command_run add_generate_command(CLI::App& app) {
+  auto command = std::make_shared<Generate_command>();
+  CLI::App* sub = app.add_subcommand(
+      "generate",
+      "Writes N sites of the reproducible family KIND from the seed S as balls text 'x y z w', each number\n"
+      "printed round-trip: the very sites the tests generate, so that a failing test case reruns from the\n"
+      "command line.");
+  sub->add_option("KIND", command->family, "the family (--list names them)");
+  command->count_option = sub->add_option("--n", command->count, "the number of sites")
+                              ->check(integer_in_range(1, kMaxGeneratedSites))
+                              ->type_name("N");
+  command->seed_option = sub->add_option("--seed", command->seed, "the seed, 0 to 2^64 - 1")
+                             ->check(integer_in_range(0, std::numeric_limits<std::uint64_t>::max()))
+                             ->type_name("S");
+  add_output_option(*sub, command->output);
+  sub->add_flag("--list", command->list, "name and describe every family");
+  return [command](std::ostream& out, std::ostream&) { return run(*command, out); };
 }
 
 }  // namespace apollonius

@@ -1,16 +1,11 @@
-// `apollonius3d generate KIND --n N --seed S [-o OUT]`: the sites the tests generate, as balls text, so
-// that any failing case can be reproduced.
+// `apollonius3d generate KIND --n N --seed S`: the sites of a reproducible family, exactly as the tests
+// generate them (src/reference/site_generators.h).
 #pragma once
 
-#include <ostream>
-#include <string>
-#include <vector>
+#include "cli/command.h"
 
 namespace apollonius {
 
-extern const char* const generate_usage;
-
-// args[0] is "generate". Throws Usage_error for bad arguments.
-int run_generate(const std::vector<std::string>& args, std::ostream& out);
+Command_run add_generate_command(CLI::App& app);
 
 }  // namespace apollonius

@@ -16,8 +16,8 @@ namespace apollonius {
 
 namespace {
 
-std::runtime_error write_error(const std::string& path, int error_number) {
-  return std::runtime_error("cannot write " + path + ": " + std::strerror(error_number));
+Output_error write_error(const std::string& path, int error_number) {
+  return Output_error("cannot write " + path + ": " + std::strerror(error_number));
 }
 
 // A stream buffer over a POSIX file descriptor: std::ofstream gives neither the descriptor that fsync
@@ -115,7 +115,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     out.flush();
     if (!out) {
       if (buffer.error_number() != 0) throw write_error(path, buffer.error_number());
-      throw std::runtime_error("cannot write " + path + ": output stream failed");
+      throw Output_error("cannot write " + path + ": output stream failed");
     }
   }
   temporary.commit();

@@ -1,41 +1,25 @@
-// Pieces of JSON output shared by the writers (vertex lists, certify reports).
+// JSON output (nlohmann-json): documents are ordered_json objects, members in the order written, laid out
+// with each element of a top-level array on a line of its own, so that large outputs stay readable and
+// line-oriented tools (grep, diff) work on them.
 #pragma once
 
-#include <array>
-#include <cstddef>
-#include <ostream>
-#include <string>
+#include <nlohmann/json.hpp>
 
-#include "io/round_trip.h"
+#include <array>
+#include <ostream>
 
 namespace apollonius {
 
-// A number, or the string "inf" or "-inf", which JSON lacks.
-std::string json_number(double value);
+using Json = nlohmann::ordered_json;
 
-// "x": X, "y": Y, "z": Z, "r": R, the members of a vertex or point object.
-std::string json_point_members(const std::array<double, 4>& point);
+// A number, or the string "inf" or "-inf" for a coordinate that overflowed (JSON has no infinity).
+Json json_number(double value);
 
-// A quoted, escaped string.
-std::string json_string(const std::string& text);
+// Adds "x", "y", "z", "r", the members of a vertex or point object.
+void add_point_members(Json& object, const std::array<double, 4>& point);
 
-// [a, b, c] on one line.
-template <class Integers>
-std::string json_array(const Integers& values) {
-  std::string array = "[";
-  for (const auto value : values) {
-    if (array.size() > 1) array += ", ";
-    array += std::to_string(value);
-  }
-  return array + "]";
-}
-
-// Elements one per line between "[" and "]", separated by commas, element(i) giving the i-th.
-template <class Element>
-void write_json_lines(std::ostream& out, std::size_t count, const Element& element) {
-  out << "[";
-  for (std::size_t i = 0; i < count; ++i) out << (i == 0 ? "\n    " : ",\n    ") << element(i);
-  out << (count == 0 ? "]" : "\n  ]");
-}
+// The top-level object: one member per line, the elements of its arrays one per line, anything deeper on
+// the line of its element. Numbers are printed in shortest round-trip form.
+void write_json_document(std::ostream& out, const Json& document);
 
 }  // namespace apollonius

@@ -97,6 +97,8 @@ bool has_pdb_record(const std::vector<Text_line>& lines) {
 }  // namespace
 
 Site_input read_sites_from_text(const std::string& content, const std::string& name, const Read_options& options) {
+  if (starts_with_byte_order_mark(content))
+    return read_sites_from_text(content.substr(byte_order_mark.size()), name, options);
   reject_binary_data(content, name);
   const std::vector<Text_line> lines = split_lines(content);
 

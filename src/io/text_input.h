@@ -22,6 +22,13 @@ void check_readable(const std::string& path);
 // The whole content of path, or of standard input for "-".
 std::string read_input_file(const std::string& path);
 
+// The UTF-8 byte-order mark that some editors write at the start of a text file; readers skip it.
+inline constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+
+inline bool starts_with_byte_order_mark(std::string_view content) {
+  return content.substr(0, byte_order_mark.size()) == byte_order_mark;
+}
+
 // Text may hold tabs, line and page breaks; any other control byte means this is no text file.
 void reject_binary_data(std::string_view content, const std::string& name);
 

@@ -29,29 +29,24 @@ void write_vertices_text(std::ostream& out, const Diagram& diagram) {
 }
 
 void write_vertices_json(std::ostream& out, const Diagram& diagram, const std::vector<Predicate_statistics>* stats) {
-  out << "{\n  \"format\": \"apollonius3d-vertices\",\n  \"version\": 1,\n  \"sites\": " << diagram.site_count
-      << ",\n  \"vertices\": ";
-  write_json_lines(out, diagram.vertices.size(), [&](std::size_t i) {
-    const Diagram_vertex& v = diagram.vertices[i];
-    return "{\"sites\": " + json_array(v.tie_set) + ", " + json_point_members(v.rounded) + "}";
-  });
-  out << ",\n  \"hidden_sites\": ";
-  write_json_lines(out, diagram.hidden.size(), [&](std::size_t i) {
-    const Hidden_site& h = diagram.hidden[i];
-    return "{\"site\": " + std::to_string(h.site) + ", \"hidden_by\": " + std::to_string(h.hidden_by) +
-           ", \"duplicate\": " + (h.duplicate ? "true" : "false") + "}";
-  });
-  out << ",\n  \"sites_without_vertex\": " << json_array(diagram.sites_without_vertex);
-  if (stats != nullptr) {
-    out << ",\n  \"stats\": {\"predicates\": ";
-    write_json_lines(out, stats->size(), [&](std::size_t i) {
-      const Predicate_statistics& s = (*stats)[i];
-      return "{\"name\": " + json_string(s.name) + ", \"evaluations\": " + std::to_string(s.evaluations) +
-             ", \"exact_stages\": " + std::to_string(s.exact_stages) + "}";
-    });
-    out << "}";
+  Json document{{"format", "apollonius3d-vertices"}, {"version", 1}, {"sites", diagram.site_count}};
+  Json& vertices = document["vertices"] = Json::array();
+  for (const Diagram_vertex& v : diagram.vertices) {
+    Json vertex{{"sites", v.tie_set}};
+    add_point_members(vertex, v.rounded);
+    vertices.push_back(std::move(vertex));
   }
-  out << "\n}\n";
+  Json& hidden = document["hidden_sites"] = Json::array();
+  for (const Hidden_site& h : diagram.hidden)
+    hidden.push_back({{"site", h.site}, {"hidden_by", h.hidden_by}, {"duplicate", h.duplicate}});
+  document["sites_without_vertex"] = diagram.sites_without_vertex;
+  if (stats != nullptr) {
+    Json predicates = Json::array();
+    for (const Predicate_statistics& s : *stats)
+      predicates.push_back({{"name", s.name}, {"evaluations", s.evaluations}, {"exact_stages", s.exact_stages}});
+    document["stats"] = {{"predicates", predicates}};
+  }
+  write_json_document(out, document);
 }
 
 }  // namespace apollonius

@@ -51,7 +51,9 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
 
   std::vector<std::vector<Found_vertex>> found;
   std::vector<Found_vertex> vertices;
-  tbb::task_arena arena(std::max(1, options.threads));  // every parallel step runs inside: --threads holds
+  // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
+  // change nothing but make TBB print a warning.
+  tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     const std::vector<std::vector<Site_index>> candidates =
         propagate_candidates(sites, active, partition, Kernel::filter_slack);

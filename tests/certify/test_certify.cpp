@@ -15,7 +15,8 @@
 #include "support/diagram_checks.h"
 #include "io/input_error.h"
 #include "io/json_output.h"
-#include "io/json_value.h"
+#include "io/round_trip.h"
+#include "io/json_input.h"
 #include "io/read_sites.h"
 #include "io/write_vertices.h"
 #include "certify/judge_claims.h"
@@ -197,14 +198,14 @@ TEST_CASE("malformed claims: Input_error with the line and the reason") {
       {"voronota field count", "0 1 2 3 1 2 3 4 5\n", Claim_format::voronota, 1, "found 9 fields"},
       {"voronota link", "0 1 2 3 1.0 2.0 3.0 4.0 0 -2 1 1\n", {}, 1, "not a vertex link"},
       {"voronota with 5 sites", "0 1 2 3 4 1.0 2.0 3.0 4.0\n", Claim_format::voronota, 1, "found 9 fields"},
-      {"json syntax", "{\"vertices\": [\n{\"sites\": [0, 1, 2, 3],\n \"x\": 1, \"y\": 2 \"z\": 3}]}", {}, 3, "expected ','"},
+      {"json syntax", "{\"vertices\": [\n{\"sites\": [0, 1, 2, 3],\n \"x\": 1, \"y\": 2 \"z\": 3}]}", {}, 3, "syntax error"},
       {"json missing r", "{\"vertices\": [\n{\"sites\": [0, 1, 2, 3], \"x\": 1, \"y\": 2, \"z\": 3}]}", {}, 2, "without \"r\""},
       {"json string coordinate", "{\"vertices\": [{\"sites\": [0, 1, 2, 3],\n\"x\": \"1\", \"y\": 2, \"z\": 3, \"r\": 1}]}", {}, 2, "must be a number"},
       {"json site count", "{\"sites\": 7,\n\"vertices\": []}", {}, 1, "for 7 sites"},
       {"json without vertices", "{\"sites\": 5}", {}, 1, "no \"vertices\""},
       {"json three sites", "{\"vertices\": [{\"sites\": [0, 1, 2], \"x\": 1, \"y\": 2, \"z\": 3, \"r\": 1}]}", {}, 1, "4 or more"},
       {"json duplicate key", "{\"vertices\": [],\n\"vertices\": []}", {}, 2, "duplicate key"},
-      {"json trailing text", "{\"vertices\": []}\nx", {}, 2, "after the JSON value"},
+      {"json trailing text", "{\"vertices\": []}\nx", {}, 2, "expected end of input"},
       {"json nested too deep", std::string(70, '[') + std::string(70, ']'), Claim_format::json, 1, "deeper than 64"},
   };
   for (const Case& c : cases) {
@@ -546,14 +547,14 @@ TEST_CASE("certify on the command line: exit codes, summary, --report written at
     CHECK(r.out.empty());
     CHECK(r.err.find("confirmed 550") != std::string::npos);
     CHECK(r.err.find("no discrepancies") != std::string::npos);
-    const Json_value json = parse_json(scratch.read("report.json"), "report");
-    REQUIRE(json.member("counts") != nullptr);
-    CHECK(json.member("format")->text == "apollonius3d-certify-report");
-    CHECK(json.member("counts")->member("confirmed")->text == "550");
-    CHECK(json.member("counts")->member("discrepancies")->text == "0");
-    CHECK(json.member("claims")->elements.size() == 550);
-    CHECK(json.member("claims")->elements[3].member("verdict")->text == "confirmed");
-    CHECK(json.member("missing")->elements.empty());
+    const nlohmann::json json = parse_json(scratch.read("report.json"), "report").value;
+    REQUIRE(json.contains("counts"));
+    CHECK(json["format"] == "apollonius3d-certify-report");
+    CHECK(json["counts"]["confirmed"] == 550);
+    CHECK(json["counts"]["discrepancies"] == 0);
+    CHECK(json["claims"].size() == 550);
+    CHECK(json["claims"][3]["verdict"] == "confirmed");
+    CHECK(json["missing"].empty());
     CHECK(scratch.file_count() == 3);  // good.txt, dropped.txt, report.json: no temporary left
   }
   SUBCASE("a dropped vertex: exit 1, named in the summary and the report") {
@@ -561,10 +562,10 @@ TEST_CASE("certify on the command line: exit codes, summary, --report written at
     CHECK(r.code == EXIT_DISCREPANCIES);
     CHECK(r.err.find("missing 1") != std::string::npos);
     CHECK(r.err.find("missing: vertex 7 ") != std::string::npos);
-    const Json_value json = parse_json(scratch.read("report.json"), "report");
-    REQUIRE(json.member("missing")->elements.size() == 1);
-    CHECK(json.member("missing")->elements[0].member("index")->text == "7");
-    CHECK(json.member("counts")->member("discrepancies")->text == "1");
+    const nlohmann::json json = parse_json(scratch.read("report.json"), "report").value;
+    REQUIRE(json["missing"].size() == 1);
+    CHECK(json["missing"][0]["index"] == 7);
+    CHECK(json["counts"]["discrepancies"] == 1);
   }
   SUBCASE("--coord-tol and --strict change the verdicts") {
     std::vector<std::string> lines = pept.lines;
@@ -600,14 +601,16 @@ TEST_CASE("certify on the command line: exit codes, summary, --report written at
     CHECK(missing.err.find("none.txt") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(scratch.path("new.json")));
   }
-  SUBCASE("usage errors exit 2") {
+  SUBCASE("usage errors exit 2 with one line saying what is wrong and a hint to --help") {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"certify"}, {"certify", kPept}, {"certify", kPept, good, "extra"}, {"certify", kPept, good, "--format", "xml"},
              {"certify", kPept, good, "--coord-tol", "-1"}, {"certify", kPept, good, "--coord-tol", "nan"},
              {"certify", kPept, good, "--bogus"}, {"certify", "-", "-"}, {"certify", kPept, good, "--report"}}) {
       const Cli_result r = run(args);
       CHECK(r.code == EXIT_BAD_INPUT);
-      CHECK(r.err.find("usage:") != std::string::npos);
+      CHECK(r.err.rfind("apollonius3d certify: ", 0) == 0);
+      CHECK(r.err.find("\nRun 'apollonius3d certify --help' for the options.\n") != std::string::npos);
+      CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 2);
     }
     CHECK(run({"certify", kPept, good, "--report", scratch.path("no/dir/report.json")}).code == EXIT_BAD_INPUT);
   }

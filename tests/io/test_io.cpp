@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <atomic>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -12,13 +13,14 @@
 #include <iostream>
 #include <random>
 #include <sstream>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "io/json_value.h"
+#include "io/json_input.h"
 #include "io/read_sites.h"
 #include "io/read_structure.h"
 #include "io/round_trip.h"
@@ -363,10 +365,10 @@ TEST_CASE("vertex writers: text and JSON") {
         "  \"version\": 1,\n"
         "  \"sites\": 6,\n"
         "  \"vertices\": [\n"
-        "    {\"sites\": [0, 1, 2, 3], \"x\": 0, \"y\": 0, \"z\": 0, \"r\": 0.7320508075688773}\n"
+        "    {\"sites\":[0,1,2,3],\"x\":0.0,\"y\":0.0,\"z\":0.0,\"r\":0.7320508075688773}\n"
         "  ],\n"
         "  \"hidden_sites\": [\n"
-        "    {\"site\": 4, \"hidden_by\": 0, \"duplicate\": true}\n"
+        "    {\"site\":4,\"hidden_by\":0,\"duplicate\":true}\n"
         "  ],\n"
         "  \"sites_without_vertex\": [5]\n"
         "}\n");
@@ -374,10 +376,10 @@ TEST_CASE("vertex writers: text and JSON") {
   const std::vector<Predicate_statistics> stats{{"vertices_of", 10, 2}, {"say \"hi\"", 0, 0}};
   std::ostringstream with_stats;
   write_vertices_json(with_stats, diagram, &stats);
-  CHECK(with_stats.str().find("\"stats\": {\"predicates\": [\n"
-                              "    {\"name\": \"vertices_of\", \"evaluations\": 10, \"exact_stages\": 2},\n"
-                              "    {\"name\": \"say \\\"hi\\\"\", \"evaluations\": 0, \"exact_stages\": 0}\n"
-                              "  ]}\n}\n") != std::string::npos);
+  CHECK(with_stats.str().find("\"stats\": {\"predicates\":["
+                              "{\"name\":\"vertices_of\",\"evaluations\":10,\"exact_stages\":2},"
+                              "{\"name\":\"say \\\"hi\\\"\",\"evaluations\":0,\"exact_stages\":0}]}\n}\n") !=
+        std::string::npos);
 }
 
 TEST_CASE("vertex writers: non-finite values and empty lists") {
@@ -394,32 +396,67 @@ TEST_CASE("vertex writers: non-finite values and empty lists") {
 
   std::ostringstream json;
   write_vertices_json(json, diagram, nullptr);
-  CHECK(json.str().find("\"x\": \"inf\", \"y\": \"-inf\", \"z\": 1.0000000000000001e+300") != std::string::npos);
+  CHECK(json.str().find("\"x\":\"inf\",\"y\":\"-inf\",\"z\":1e+300,\"r\":0.1}") != std::string::npos);
   CHECK(json.str().find("\"hidden_sites\": [],\n  \"sites_without_vertex\": []\n}") != std::string::npos);
 }
 
-TEST_CASE("JSON: every kind of value, escapes, number literals kept as text, the line of each value") {
-  const Json_value v = parse_json("{\"a\": [1, -0.5e-3, true, false, null],\n \"s\": \"q\\\"\\\\\\/\\n\\u00e9\\ud83d\\ude00\",\n\n \"o\": {}}", "j");
-  REQUIRE(v.kind == Json_value::Kind::object);
-  const Json_value* a = v.member("a");
-  REQUIRE(a != nullptr);
-  REQUIRE(a->elements.size() == 5);
-  CHECK(a->elements[0].text == "1");
-  CHECK(a->elements[1].text == "-0.5e-3");
-  CHECK(a->elements[2].text == "true");
-  CHECK(a->elements[3].text == "false");
-  CHECK(a->elements[4].kind == Json_value::Kind::null);
-  CHECK(v.member("s")->text == "q\"\\/\n\u00e9\U0001F600");
-  CHECK(v.member("s")->line == 2);
-  CHECK(v.member("o")->line == 4);
-  CHECK(v.member("o")->members.empty());
-  CHECK(v.member("missing") == nullptr);
+TEST_CASE("JSON: every kind of value, escapes, and the line where each value starts") {
+  const Json_document d = parse_json(
+      "{\"a\": [1, -0.5e-3,\n true, false, null],\n \"s\": \"q\\\"\\\\\\/\\n\\u00e9\\ud83d\\ude00\",\n\n \"o\": {},"
+      " \"n\": 12\n}",
+      "j");
+  const Json_node v(d.value, d.lines);
+  REQUIRE(v.value().is_object());
+  CHECK(v.line() == 1);
+  const std::optional<Json_node> a = v.member("a");
+  REQUIRE(a);
+  REQUIRE(a->size() == 5);
+  CHECK(a->element(0).value() == 1);
+  CHECK(a->element(1).value().get<double>() == -0.5e-3);
+  CHECK(a->element(1).line() == 1);  // the number's end was read with the line break after it
+  CHECK(a->element(2).value() == true);
+  CHECK(a->element(2).line() == 2);
+  CHECK(a->element(3).value() == false);
+  CHECK(a->element(4).value().is_null());
+  CHECK(a->element(4).kind() == std::string("null"));
+  CHECK(v.member("s")->value() == "q\"\\/\n\u00e9\U0001F600");
+  CHECK(v.member("s")->line() == 3);
+  CHECK(v.member("o")->line() == 5);
+  CHECK(v.member("o")->value().empty());
+  CHECK(v.member("n")->line() == 5);
+  CHECK(v.member("n")->kind() == std::string("a number"));
+  CHECK_FALSE(v.member("missing"));
+  CHECK_FALSE(a->member("a"));  // not an object
+}
+
+TEST_CASE("JSON: numbers read as the nearest double, as from_chars reads them") {
+  for (const std::string literal : {"0.1", "1e-320", "2.2250738585072011e-308", "1.7976931348623157e308",
+                                    "0.30000000000000004", "-4.9406564584124654e-324", "123456789012345678901234567890"}) {
+    CAPTURE(literal);
+    const Json_document d = parse_json("[" + literal + "]", "j");
+    double expected = 0;
+    std::from_chars(literal.data(), literal.data() + literal.size(), expected);
+    CHECK(d.value[0].get<double>() == expected);
+  }
 }
 
 TEST_CASE("JSON: malformed documents name their line") {
-  for (const auto& [text, line] : std::vector<std::pair<std::string, std::size_t>>{
-           {"", 1}, {"{\n\"a\": 01}", 2}, {"[1.]", 1}, {"[-]", 1}, {"[1e]", 1}, {"[1,\n]", 2}, {"{\"a\" 1}", 1},
-           {"[\"a\nb\"]", 1}, {"[\"\\x\"]", 1}, {"[\"\\ud800\"]", 1}, {"[tru]", 1}, {"{}\n{}", 2}, {"[\"open", 1}}) {
+  for (const auto& [text, line, reason] : std::vector<std::tuple<std::string, std::size_t, std::string>>{
+           {"", 1, "unexpected end of input"},
+           {"{\n\"a\": 01}", 2, "syntax error"},
+           {"[1.]", 1, "syntax error"},
+           {"[-]", 1, "syntax error"},
+           {"[1e]", 1, "syntax error"},
+           {"[1,\n]", 2, "syntax error"},
+           {"{\"a\" 1}", 1, "syntax error"},
+           {"[\"a\nb\"]", 1, "syntax error"},
+           {"[\"\\x\"]", 1, "syntax error"},
+           {"[\"\\ud800\"]", 1, "syntax error"},
+           {"[tru]", 1, "syntax error"},
+           {"{}\n{}", 2, "expected end of input"},
+           {"[\"open", 1, "syntax error"},
+           {"{\"v\": [],\n\"v\": []}", 2, "duplicate key \"v\""},
+           {std::string(65, '[') + std::string(65, ']'), 1, "nested deeper than 64 levels"}}) {
     CAPTURE(text);
     try {
       parse_json(text, "bad.json");
@@ -427,8 +464,10 @@ TEST_CASE("JSON: malformed documents name their line") {
     } catch (const Input_error& e) {
       CHECK(e.file() == "bad.json");
       CHECK(e.line() == line);
+      CHECK(e.reason().find(reason) != std::string::npos);
     }
   }
+  CHECK_NOTHROW(parse_json(std::string(64, '[') + std::string(64, ']'), "deep.json"));
 }
 
 TEST_CASE("regression: structure_coordinate_not_finite") {
