@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
-  doctest-dev gemmi-dev tao-pegtl-dev zlib1g-dev libtbb-dev
+  doctest-dev gemmi-dev tao-pegtl-dev zlib1g-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   voronota time
 )
 if [ "${1:-}" = "--fuzz" ]; then packages+=(clang libclang-rt-dev); fi
