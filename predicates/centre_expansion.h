@@ -44,6 +44,7 @@
 
 #include "predicates/axis_box.h"
 #include "predicates/site.h"
+#include "predicates/unit_roundoff.h"
 
 namespace apollonius {
 
@@ -85,7 +86,6 @@ struct Witness_expansion : Centre_expansion {
 // Sums of squares inside [kTinySquare, kHugeSquare] (or exactly 0) keep the relative error bounds of
 // docs/ERROR_BOUNDS.md: underflowed terms are then negligible and nothing overflows.
 constexpr double kTinySquare = 0x1p-960, kHugeSquare = 0x1p960, kHugeWeight = 0x1p480;
-constexpr double kUnitRoundoff = 0x1p-53;  // u, of round-to-nearest doubles
 inline bool in_error_bound_range(double sum_of_squares) {
   return sum_of_squares == 0 || (sum_of_squares >= kTinySquare && sum_of_squares <= kHugeSquare);
 }
@@ -193,8 +193,8 @@ enum class Centre_outcome { dominated, kept, undecided };
 // The tests that need no corner: i certainly closer at the centre (kept), the Lipschitz test (dominated),
 // and the first-order bound f(c) - sum_a |g_a| h_a, g = u_i - u_j. When that bound certainly falls below 0,
 // (B) cannot hold (docs/ERROR_BOUNDS.md, "Centre expansion", item 5) and i is kept without trying (A) either:
-// on 1j3h, 2% of (A)'s removals lay there, against 2.2 million of its 2.3 million failures, and skipping
-// it cut the time by 6%. Keeping a candidate is always safe.
+// there (A) rarely removes and mostly fails, so it is skipped for speed (docs/benchmarks.md). Keeping a
+// candidate is always safe.
 inline Centre_outcome centre_tests(const Centre_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
                                    double slack) {
   if (!at_i.usable || !at_j.usable) return Centre_outcome::kept;

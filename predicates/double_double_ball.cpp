@@ -13,7 +13,7 @@ using namespace double_double;
 
 // q ~ a / b, then |a / b - q| = |a - q b| / |b| <= (|r| + error(r)) / (|b| - error(b)), r = a - q b as a ball.
 Double_double_ball quotient(const Double_double_ball& a, const Double_double_ball& b) {
-  const double b_least = (std::fabs(b.hi) - std::fabs(b.lo) - b.error) * (1 - 4 * kUnit);
+  const double b_least = (std::fabs(b.hi) - std::fabs(b.lo) - b.error) * (1 - 4 * kUnitRoundoff);
   if (!(b_least > 0)) return {0, 0, kInfinity};
   const double q1 = a.hi / b.hi;
   const Double_double_ball first_residual = a - Double_double_ball(q1) * b;
@@ -33,7 +33,7 @@ Double_double_ball square_root(const Double_double_ball& a) {
   fast_two_sum(s1, first_residual.hi / (2 * s1), sh, sl);
   const Double_double_ball s(sh, sl, 0);
   const Double_double_ball residual = a - s * s;
-  const double s_least = (sh - std::fabs(sl)) * (1 - 4 * kUnit);
+  const double s_least = (sh - std::fabs(sl)) * (1 - 4 * kUnitRoundoff);
   if (!(s_least > 0)) return {0, 0, kInfinity};
   return {sh, sl, rounded_up((residual.magnitude() + residual.error) / s_least)};
 }

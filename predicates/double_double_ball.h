@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "predicates/sign.h"
+#include "predicates/unit_roundoff.h"
 
 namespace apollonius {
 
@@ -26,8 +27,7 @@ struct Double_double_ball {
 // The building blocks of the operations below.
 namespace double_double {
 
-constexpr double kUnit = 0x1p-53;
-constexpr double kUnitSquared = 0x1p-106;
+constexpr double kUnitSquared = kUnitRoundoff * kUnitRoundoff;
 // Added to every bound: covers any part of a result that underflowed (below 2^-1022), yet the product of
 // two of them is still normal (subnormal operands are very slow).
 constexpr double kUnderflow = 0x1p-511;
@@ -56,7 +56,7 @@ inline void two_product(double a, double b, double& p, double& e) {
 }
 
 // The computed bound e, enlarged to cover its own rounding (a sum or product of a few non-negative terms).
-inline double rounded_up(double e) { return e * (1 + 8 * kUnit); }
+inline double rounded_up(double e) { return e * (1 + 8 * kUnitRoundoff); }
 
 }  // namespace double_double
 

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "predicates/number_types.h"
+#include "predicates/unit_roundoff.h"
 
 namespace apollonius {
 
@@ -21,7 +22,6 @@ struct Double_with_error {
   explicit Double_with_error(double v) : value(v) {}
   Double_with_error(double v, double e) : value(v), error(e) {}
 
-  static constexpr double kUnit = 0x1p-53;
   // Added to every bound: covers a result that underflowed, and keeps products of bounds normal.
   static constexpr double kUnderflow = 0x1p-511;
   static constexpr double kChain = 1 + 0x1p-39;
@@ -29,32 +29,32 @@ struct Double_with_error {
 
 inline Double_with_error operator+(const Double_with_error& a, const Double_with_error& b) {
   const double z = a.value + b.value;
-  return {z, a.error + b.error + Double_with_error::kUnit * std::fabs(z) + Double_with_error::kUnderflow};
+  return {z, a.error + b.error + kUnitRoundoff * std::fabs(z) + Double_with_error::kUnderflow};
 }
 inline Double_with_error operator-(const Double_with_error& a) { return {-a.value, a.error}; }
 inline Double_with_error operator-(const Double_with_error& a, const Double_with_error& b) {
   const double z = a.value - b.value;
-  return {z, a.error + b.error + Double_with_error::kUnit * std::fabs(z) + Double_with_error::kUnderflow};
+  return {z, a.error + b.error + kUnitRoundoff * std::fabs(z) + Double_with_error::kUnderflow};
 }
 inline Double_with_error operator*(const Double_with_error& a, const Double_with_error& b) {
   const double z = a.value * b.value;
   return {z, std::fabs(a.value) * b.error + std::fabs(b.value) * a.error + a.error * b.error +
-                 Double_with_error::kUnit * std::fabs(z) + Double_with_error::kUnderflow};
+                 kUnitRoundoff * std::fabs(z) + Double_with_error::kUnderflow};
 }
 inline Double_with_error operator/(const Double_with_error& a, const Double_with_error& b) {
   // |a/b - z| <= (|a - z b| + e_a + |z| e_b) / (|b| - e_b), |a - z b| <= u |a| for z = fl(a / b).
   const double least = std::fabs(b.value) - b.error * Double_with_error::kChain;
   if (!(least > 0)) throw Uncertain_sign();
   const double z = a.value / b.value;
-  return {z, (Double_with_error::kUnit * std::fabs(a.value) + a.error + std::fabs(z) * b.error) / least *
-                 (1 + 4 * Double_with_error::kUnit) + Double_with_error::kUnderflow};
+  return {z, (kUnitRoundoff * std::fabs(a.value) + a.error + std::fabs(z) * b.error) / least *
+                 (1 + 4 * kUnitRoundoff) + Double_with_error::kUnderflow};
 }
 
 // For a real argument known to be positive: |sqrt(a_r) - sqrt(a)| <= e_a / sqrt(a), plus the rounding.
 inline Double_with_error sqrt(const Double_with_error& a) {
   if (!(a.value > 0)) throw Uncertain_sign();
   const double z = std::sqrt(a.value);
-  return {z, a.error / z * (1 + 4 * Double_with_error::kUnit) + Double_with_error::kUnit * z + Double_with_error::kUnderflow};
+  return {z, a.error / z * (1 + 4 * kUnitRoundoff) + kUnitRoundoff * z + Double_with_error::kUnderflow};
 }
 
 // The sign of every number within the bound, or Uncertain_sign (never ZERO: every operation rounds).
@@ -66,7 +66,7 @@ inline Sign certain_sign(const Double_with_error& x) {
 // An interval holding every number within the bound, valid in any rounding mode: the margin 2u |value|
 // and the factor 1 + 4u cover the roundings of the two bounds' computation (error >= kUnderflow > 0).
 inline Interval enclosing_interval(const Double_with_error& x) {
-  constexpr double u = Double_with_error::kUnit;
+  constexpr double u = kUnitRoundoff;
   const double reach = (x.error * Double_with_error::kChain + 2 * u * std::fabs(x.value)) * (1 + 4 * u);
   return Interval(x.value - reach, x.value + reach);
 }

@@ -1,55 +1,54 @@
 // A double with the magnitude of its computation, for a priori error analysis (Higham, Accuracy and
 // Stability of Numerical Algorithms, 3.1-3.3): the magnitude is the same computation on absolute values,
-// and |computed - exact| <= gamma_{3 kDepth} magnitude. The polynomial part of vertices_of's first stage
-// (quadruple_line.h) runs in it at about two thirds of the cost of Double_with_error's running bound, then
+// and |computed - exact| <= gamma_{3 depth} magnitude. The polynomial part of vertices_of's first stage
+// (quadruple_line.h) runs in it, cheaper than Double_with_error's running bound (no bound per operation), then
 // hands Double_with_error its values and bounds for the divisions and square roots. Only +, - and *.
-// The bound and kDepth are derived in docs/ERROR_BOUNDS.md ("Doubles with magnitude").
+// The bound and the depth are derived in docs/ERROR_BOUNDS.md ("Doubles with magnitude").
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "predicates/double_with_error.h"
 
 namespace apollonius {
 
-// Invariant: |x - value| <= gamma_{3 kDepth} magnitude for the real x it stands for, and magnitude >= |x|,
-// provided no computation is deeper than kDepth.
+// Invariant: |x - value| <= gamma_{3 depth} magnitude for the real x it stands for, and magnitude >= |x|.
 struct Double_with_magnitude {
   double value = 0, magnitude = 0;
+  // Roundings that compound: 0 for an input double, 1 for a difference of two, max + 1 for a sum, sum + 1
+  // for a product.
+  int depth = 0;
 
   Double_with_magnitude() = default;
   explicit Double_with_magnitude(double v) : value(v), magnitude(std::fabs(v)) {}
-  Double_with_magnitude(double v, double m) : value(v), magnitude(m) {}
+  Double_with_magnitude(double v, double m, int d) : value(v), magnitude(m), depth(d) {}
 
   // x - y for doubles x, y: one rounding of the difference itself, |fl(x - y) - (x - y)| <= u |x - y|, so
   // its magnitude is |fl(x - y)| (1 + 4u) >= |x - y|, not |x| + |y|: the sites' coordinates may be far
   // larger than their differences.
   static Double_with_magnitude difference(double x, double y) {
     const double z = x - y;
-    return {z, std::fabs(z) * (1 + 4 * Double_with_error::kUnit)};
+    return {z, std::fabs(z) * (1 + 4 * kUnitRoundoff), 1};
   }
-
-  // The depth (roundings that compound: max + 1 for a sum, sum + 1 for a product) of quadruple_line's
-  // deepest value, the discriminant. A deeper computation in this type would need a larger constant.
-  static constexpr int kDepth = 52;
   // Added to the magnitude of every product: u kUnderflow exceeds the error 2^-1075 of a product that
   // underflowed, and keeps every magnitude normal.
   static constexpr double kUnderflow = 0x1p-1000;
 
-  // gamma_{3 kDepth} magnitude, rounded up: (3 kDepth + 1) u magnitude (1 + 2^-40) covers gamma's
+  // gamma_{3 depth} magnitude, rounded up: (3 depth + 1) u magnitude (1 + 2^-40) covers gamma's
   // denominator and the roundings of its own computation.
-  double error_bound() const { return (3.0 * kDepth + 1) * Double_with_error::kUnit * (1 + 0x1p-40) * magnitude; }
+  double error_bound() const { return (3.0 * depth + 1) * kUnitRoundoff * (1 + 0x1p-40) * magnitude; }
 };
 
 inline Double_with_magnitude operator+(const Double_with_magnitude& a, const Double_with_magnitude& b) {
-  return {a.value + b.value, a.magnitude + b.magnitude};
+  return {a.value + b.value, a.magnitude + b.magnitude, std::max(a.depth, b.depth) + 1};
 }
-inline Double_with_magnitude operator-(const Double_with_magnitude& a) { return {-a.value, a.magnitude}; }
+inline Double_with_magnitude operator-(const Double_with_magnitude& a) { return {-a.value, a.magnitude, a.depth}; }
 inline Double_with_magnitude operator-(const Double_with_magnitude& a, const Double_with_magnitude& b) {
-  return {a.value - b.value, a.magnitude + b.magnitude};
+  return {a.value - b.value, a.magnitude + b.magnitude, std::max(a.depth, b.depth) + 1};
 }
 inline Double_with_magnitude operator*(const Double_with_magnitude& a, const Double_with_magnitude& b) {
-  return {a.value * b.value, a.magnitude * b.magnitude + Double_with_magnitude::kUnderflow};
+  return {a.value * b.value, a.magnitude * b.magnitude + Double_with_magnitude::kUnderflow, a.depth + b.depth + 1};
 }
 
 // The sign of every number within the bound, or Uncertain_sign (never ZERO; NaN and infinity included).

@@ -10,8 +10,6 @@ enum class Sign : signed char { NEGATIVE = -1, ZERO = 0, POSITIVE = 1 };
 constexpr Sign operator-(Sign s) { return static_cast<Sign>(-static_cast<int>(s)); }
 constexpr Sign operator*(Sign a, Sign b) { return static_cast<Sign>(static_cast<int>(a) * static_cast<int>(b)); }
 constexpr int to_int(Sign s) { return static_cast<int>(s); }
-template <class Int>
-constexpr Sign sign_of_int(Int i) { return i > 0 ? Sign::POSITIVE : (i < 0 ? Sign::NEGATIVE : Sign::ZERO); }
 
 const char* to_string(Sign s);
 

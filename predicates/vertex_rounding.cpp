@@ -10,15 +10,13 @@
 namespace apollonius {
 namespace {
 
-constexpr double kUnit = 0x1p-53;
-
 // The double nearest to every number of [centre + offset - error, centre + offset + error], if one double
 // is, for a double centre: every such number lies strictly between the midpoints around the centre.
 std::optional<double> rounding_around(double centre, double offset_magnitude, double error) {
   if (!std::isfinite(centre) || !(std::fabs(centre) >= 0x1p-1000)) return std::nullopt;
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double up = std::nextafter(centre, inf) - centre, down = centre - std::nextafter(centre, -inf);
-  if ((offset_magnitude + error) * (1 + 8 * kUnit) < std::fmin(up, down) / 2) return centre;
+  if ((offset_magnitude + error) * (1 + 8 * kUnitRoundoff) < std::fmin(up, down) / 2) return centre;
   return std::nullopt;
 }
 

@@ -12,7 +12,7 @@ namespace {
 // A box with at most this many candidates is decided (the paper: four; see box_refinement.h).
 constexpr std::size_t kLeafCandidates = 6;
 // The quadruple cache holds at most about this many quadruples (each up to two vertices, ~0.5 KB): about
-// 1 MB stays in a core's cache. 8192 kept 7% fewer recomputations on 1j3h but took 2 to 3% longer.
+// 1 MB, which stays in a core's cache; larger caches recompute less but run slower (docs/benchmarks.md).
 constexpr std::size_t kCachedQuadruples = 2048;
 // Each candidate is tested against this many of the best candidates at the box centre.
 constexpr std::size_t kWitnesses = 4;

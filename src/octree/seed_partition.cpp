@@ -61,13 +61,14 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
   }
   levels_.push_back(g);
   unit_.push_back(side);
+  Axis_box grid_box;  // G
   for (int a = 0; a < 3; ++a) {
-    grid_box_.lo[a] = static_cast<double>(g.lo[a]) * side;
-    grid_box_.hi[a] = static_cast<double>(g.hi[a]) * side;
-    origin_[a] = grid_box_.lo[a] + (grid_box_.hi[a] - grid_box_.lo[a]) / 2;
+    grid_box.lo[a] = static_cast<double>(g.lo[a]) * side;
+    grid_box.hi[a] = static_cast<double>(g.hi[a]) * side;
+    origin_[a] = grid_box.lo[a] + (grid_box.hi[a] - grid_box.lo[a]) / 2;
   }
   double half_extent = 0;
-  for (int a = 0; a < 3; ++a) half_extent = std::max(half_extent, grid_box_.hi[a] - origin_[a]);
+  for (int a = 0; a < 3; ++a) half_extent = std::max(half_extent, grid_box.hi[a] - origin_[a]);
   const double needed = 2 * far_field_scale * half_extent;
 
   // Shells: level l + 1 has cubes twice as large, reaches at least one of them beyond level l, and is
@@ -143,12 +144,6 @@ bool Seed_partition::is_box(std::size_t id) const {
   int level = 0;
   const Index3 k = index_of(id, level);
   return !in_hole(level, k);
-}
-
-int Seed_partition::level(std::size_t id) const {
-  int level = 0;
-  index_of(id, level);
-  return level;
 }
 
 Axis_box Seed_partition::box(std::size_t id) const {

@@ -30,7 +30,6 @@ class Seed_partition {
   std::size_t id_count() const { return level_offset_.back(); }
   bool is_box(std::size_t id) const;
   Axis_box box(std::size_t id) const;
-  int level(std::size_t id) const;
 
   // The boxes sharing a piece of face of positive area with box `id`, appended to out.
   void append_face_neighbours(std::size_t id, std::vector<std::size_t>& out) const;
@@ -41,12 +40,10 @@ class Seed_partition {
   // Whether the box lies on the boundary of R.
   bool touches_root_boundary(std::size_t id) const;
 
-  const Axis_box& grid_box() const { return grid_box_; }
   const Axis_box& root_box() const { return root_box_; }
   // The centre of G and the radius of the ball about it that R contains.
   const std::array<double, 3>& origin() const { return origin_; }
   double root_radius() const { return root_radius_; }
-  double cell_size() const { return unit_.front(); }
 
  private:
   using Index3 = std::array<std::int64_t, 3>;
@@ -62,7 +59,7 @@ class Seed_partition {
   std::vector<Level> levels_;
   std::vector<double> unit_;                // 2^l s
   std::vector<std::size_t> level_offset_;  // first identifier of each level, and the total at the end
-  Axis_box grid_box_, root_box_;
+  Axis_box root_box_;
   std::array<double, 3> origin_;
   double root_radius_ = 0;
 };
