@@ -9,7 +9,7 @@ set -euo pipefail
 SCRIPT_DIR=$(cd "$(dirname "$0")" && pwd)
 REPO_DIR=$(cd "$SCRIPT_DIR/.." && pwd)
 
-DATA_DIR=${BENCH_DATA_DIR:-"$SCRIPT_DIR/../../shared/data"}
+DATA_DIR=${BENCH_DATA_DIR:-"$SCRIPT_DIR/data"}
 WORK_DIR=${BENCH_WORK_DIR:-"$SCRIPT_DIR/work/certify"}
 APOLLONIUS=${APOLLONIUS3D:-"$REPO_DIR/build/apollonius3d"}
 VORONOTA=${VORONOTA:-voronota}
@@ -36,7 +36,7 @@ Usage: $0 [options]
   --threads N       for apollonius3d certify and crosscheck (default: $THREADS)
   --peer NAME       voronota (certify its output) or float (crosscheck our float path); default: $PEER
   --work-dir DIR    inputs, outputs, reports (default: bench/work/certify)
-Env: BENCH_DATA_DIR (default ../shared/data), APOLLONIUS3D (binary), VORONOTA (binary).
+Env: BENCH_DATA_DIR (default bench/data), APOLLONIUS3D (binary), VORONOTA (binary).
 EOF
 }
 

@@ -7,7 +7,7 @@ SCRIPT_DIR=$(cd "$(dirname "$0")" && pwd)
 REPO_DIR=$(cd "$SCRIPT_DIR/.." && pwd)
 
 # ---- defaults (env vars override, flags override env vars) -----------------
-DATA_DIR=${BENCH_DATA_DIR:-"$SCRIPT_DIR/../../shared/data"}
+DATA_DIR=${BENCH_DATA_DIR:-"$SCRIPT_DIR/data"}
 WORK_DIR=${BENCH_WORK_DIR:-"$SCRIPT_DIR/work"}
 APOLLONIUS=${APOLLONIUS3D:-"$REPO_DIR/build/apollonius3d"}
 VORONOTA=${VORONOTA:-voronota}
@@ -30,7 +30,7 @@ Usage: $0 [options]
   --threads-sweep         also run apollonius3d with --threads $SWEEP_THREADS (base runs get --threads 1)
   --only both|voronota|apollonius   run only one tool (default: both)
   --work-dir DIR          where inputs/outputs go (env BENCH_WORK_DIR, default bench/work)
-Env: BENCH_DATA_DIR (default ../shared/data), APOLLONIUS3D (binary), VORONOTA (binary).
+Env: BENCH_DATA_DIR (default bench/data), APOLLONIUS3D (binary), VORONOTA (binary).
 EOF
 }
 

@@ -1,4 +1,4 @@
-// The isolated points at equal weighted distance from every site of a claimed set (SPEC section 2): the
+// The isolated points at equal weighted distance from every site of a claimed set (docs/design.md, "Algebra"): the
 // candidates for the vertex a claim names. Decided by exact predicates only.
 #pragma once
 

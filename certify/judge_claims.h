@@ -1,5 +1,5 @@
 // The verdict on each vertex of a claimed list, against the certified diagram of the same sites
-// (SPEC section 4, `certify`). Whether a point is a vertex, which vertex a claim's sites can name, and
+// (docs/contract.md, `certify`). Whether a point is a vertex, which vertex a claim's sites can name, and
 // why a claim is not a vertex are decided by exact predicates only. Doubles do two things, both reports:
 // they pick which of a claim's candidate points its coordinates mean (the nearest, by the correctly
 // rounded values), and they measure how far off the claimed coordinates are (coordinate_tolerance.h).

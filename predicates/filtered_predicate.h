@@ -1,4 +1,4 @@
-// Staged evaluation (SPEC section 3), wrapped around a predicate from outside as in CGAL's
+// Staged evaluation (docs/design.md, "Arithmetic"), wrapped around a predicate from outside as in CGAL's
 // Filtered_predicate: the predicate is one function template `evaluate<NT>`, run first with Interval
 // under a Rounding_guard, and again with Exact only if some interval sign was uncertain.
 #pragma once

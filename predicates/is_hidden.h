@@ -1,6 +1,6 @@
 // Predicate is_hidden(i, j): ball i lies inside ball j, tangency included: |x_i - x_j| <= w_j - w_i.
-// Such a site has a cell without interior (SPEC section 1). Of two identical sites the later index is the
-// hidden one, so that exactly one of them stays.
+// Such a site has a cell without interior (docs/contract.md, "The diagram"). Of two identical sites the
+// later index is the hidden one, so that exactly one of them stays.
 #pragma once
 
 #include "predicates/filtered_predicate.h"

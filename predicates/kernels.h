@@ -1,4 +1,4 @@
-// The two arithmetics the algorithms run with (SPEC section 3), as geometric traits in the way of CGAL's
+// The two arithmetics the algorithms run with (docs/design.md, "Arithmetic"), as geometric traits in the way of CGAL's
 // kernels: the octree reaches geometry only through one of them, so its combinatorics never see a number
 // type.
 //  - Certified_kernel: the filtered exact predicates, and double filters that count their rounding errors.

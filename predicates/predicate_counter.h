@@ -1,4 +1,4 @@
-// How often each predicate ran and how often its filters failed, for --stats (SPEC section 3).
+// How often each predicate ran and how often its filters failed, for --stats (docs/design.md, "Arithmetic").
 #pragma once
 
 #include <array>

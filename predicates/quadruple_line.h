@@ -1,4 +1,4 @@
-// The linear part of the vertex equations of a quadruple (SPEC section 2), for any number type NT.
+// The linear part of the vertex equations of a quadruple (docs/design.md, "Algebra"), for any number type NT.
 //
 // Take site 0 of the quadruple as origin: a_m = p_m - p_0, b_m = w_m - w_0 (m = 1, 2, 3). In the unknown
 // X = 2 (v - p_0, r + w_0) in R^4 the tangency equations |v - p_m| = r + w_m become

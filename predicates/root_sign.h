@@ -1,4 +1,4 @@
-// Exact signs of numbers with square roots, the only irrational numbers of the diagram (SPEC section 2).
+// Exact signs of numbers with square roots, the only irrational numbers of the diagram (docs/design.md, "Algebra").
 // Every vertex coordinate lies in Q(sqrt(d)) for the discriminant d of its quadruple; comparing two
 // vertices therefore involves two different roots.
 //

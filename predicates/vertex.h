@@ -1,4 +1,4 @@
-// A vertex held symbolically (SPEC section 3): its four defining sites and which root of their quadratic,
+// A vertex held symbolically (docs/design.md, "Arithmetic"): its four defining sites and which root of their quadratic,
 // never rounded coordinates. It caches an interval enclosure of X = 2 (v - p_0, r + w_0) (quadruple_line.h)
 // for the filters, and computes its exact coordinates in Q(sqrt(discriminant)) on demand.
 #pragma once

@@ -1,4 +1,4 @@
-// The printed coordinates of a vertex (SPEC section 4): the correctly rounded doubles of its exact x, y,
+// The printed coordinates of a vertex (docs/contract.md): the correctly rounded doubles of its exact x, y,
 // z and r. Rounding to nearest is monotone and leaves doubles as they are, so they also order the vertex
 // exactly against any double they differ from (vertex_in_box.h).
 #pragma once

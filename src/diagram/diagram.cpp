@@ -15,7 +15,7 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   diagram.hidden = std::move(hidden);
   std::vector<std::array<double, 4>> rounded(vertices.size());
   for (std::size_t k = 0; k < vertices.size(); ++k) rounded[k] = Kernel::printed_coordinates(vertices[k].second);
-  // SPEC section 4 orders lines by printed values; equal printed values fall back to the exact order.
+  // docs/contract.md orders lines by printed values; equal printed values fall back to the exact order.
   // Sorted by index, then each vertex moved once: they are large, and one copy of them at a time is enough.
   std::vector<std::size_t> order(vertices.size());
   std::iota(order.begin(), order.end(), std::size_t{0});

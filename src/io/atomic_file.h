@@ -1,4 +1,4 @@
-// Output files are written atomically (SPEC section 4): readers see the old file or the whole new one,
+// Output files are written atomically (docs/contract.md): readers see the old file or the whole new one,
 // never a part, and a failed command leaves no output at all.
 #pragma once
 

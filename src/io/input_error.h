@@ -1,4 +1,4 @@
-// Bad input (SPEC section 4): a message naming the file, the line and the reason; the command exits 2.
+// Bad input (docs/contract.md): a message naming the file, the line and the reason; the command exits 2.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Reading the sites of a diagram from any input of SPEC section 4: balls text, vdrc, PDB or mmCIF.
+// Reading the sites of a diagram from any input of docs/contract.md: balls text, vdrc, PDB or mmCIF.
 // Every failure is an Input_error naming the file, the 1-based line (0 for the whole file) and the reason.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Doubles as text that reads back as the same double (SPEC section 4 prints "%.17g").
+// Doubles as text that reads back as the same double (docs/contract.md prints "%.17g").
 #pragma once
 
 #include <algorithm>

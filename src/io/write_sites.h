@@ -1,4 +1,4 @@
-// Sites as balls text (SPEC section 4), what the balls reader reads back as the same doubles in the same
+// Sites as balls text (docs/contract.md), what the balls reader reads back as the same doubles in the same
 // order.
 #pragma once
 

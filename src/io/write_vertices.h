@@ -1,4 +1,4 @@
-// The vertex list of a Diagram as text or JSON (SPEC section 4).
+// The vertex list of a Diagram as text or JSON (docs/contract.md).
 #pragma once
 
 #include <ostream>

@@ -1,5 +1,5 @@
 // libFuzzer target: arbitrary bytes as an input file, format detected by content (balls, vdrc, PDB or
-// mmCIF through gemmi). The reader's contract (io/read_sites.h, SPEC section 4): it returns at least one
+// mmCIF through gemmi). The reader's contract (io/read_sites.h, docs/contract.md): it returns at least one
 // site, every value finite, or it throws Input_error. Any other exception, a crash or a sanitizer report
 // is a bug; so is a non-finite value, which the CLI would then hand to the algorithms.
 #include <cmath>

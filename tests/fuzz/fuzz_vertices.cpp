@@ -9,7 +9,7 @@
 // seed grid around the centres, overflows. That needs a centre coordinate beyond 2^-12 of the double range;
 // the same exception for any smaller input, and every other exception (std::logic_error from a vertex
 // whose exact root vanished, Uncertain_sign leaking out of a filter, ...), is a bug: it escapes and
-// libFuzzer reports it. The limitation itself is a gap against SPEC section 1 (sites are any doubles;
+// libFuzzer reports it. The limitation itself is a gap against docs/contract.md, "The diagram" (sites are any doubles;
 // the brute force answers them): the CLI exits 3 on such input.
 #include <cmath>
 #include <cstddef>
