@@ -1,11 +1,12 @@
 # cmake --install: the libraries of every layer but the command line, their headers under
 # include/apollonius3d/<layer>/, the apollonius3d binary, and the CMake package apollonius3d.
 include(CMakePackageConfigHelpers)
-set(apollonius3d_installed_layers predicates diagram octree reference io certify)
+set(apollonius3d_installed_layers predicates diagram octree topology reference io certify)
 set(apollonius3d_header_folders
   predicates predicates
   src/diagram diagram
   src/octree octree
+  src/topology topology
   src/reference reference
   src/io io
   certify certify)

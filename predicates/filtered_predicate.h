@@ -3,6 +3,7 @@
 // under a Rounding_guard, and again with Exact only if some interval sign was uncertain.
 #pragma once
 
+#include <type_traits>
 #include <utility>
 
 #include "predicates/number_types.h"
@@ -13,7 +14,17 @@ namespace apollonius {
 
 // Predicate must provide `static constexpr const char* name` and `template <class NT> static R evaluate(...)`;
 // it may provide `static std::optional<R> static_filter(...)`, a cheaper first stage in plain doubles with
-// a derived error bound (docs/ERROR_BOUNDS.md), which answers only when certain.
+// a derived error bound (docs/ERROR_BOUNDS.md), which answers only when certain, and `using Exact_number =
+// Rational;` when its exact stage divides (the default, Exact, never does).
+template <class P, class = void>
+struct Exact_number_of {
+  using type = Exact;
+};
+template <class P>
+struct Exact_number_of<P, std::void_t<typename P::Exact_number>> {
+  using type = typename P::Exact_number;
+};
+
 template <class Predicate>
 class Filtered_predicate {
  public:
@@ -31,7 +42,7 @@ class Filtered_predicate {
       }
     }
     counter().count_exact_stage();
-    return Predicate::template evaluate<Exact>(args...);
+    return Predicate::template evaluate<typename Exact_number_of<Predicate>::type>(args...);
   }
 
   // The floating path: the predicate in plain doubles, no filter and no exact stage.

@@ -2,9 +2,11 @@
 // for the floating path).
 //  - Interval: CGAL::Interval_nt<false>, valid only inside a Rounding_guard. Its sign is certain or throws.
 //  - Exact: CGAL::Gmpzf, a GMP mantissa times 2^exponent. Every double is one exactly, and +, -, * are
-//    exact, so every predicate is written division-free.
+//    exact, so the vertex predicates are written division-free.
+//  - Rational: CGAL::Gmpq, for the exact stage of the few predicates that divide (rational.h).
 #pragma once
 
+#include <CGAL/Gmpq.h>
 #include <CGAL/Gmpzf.h>
 #include <CGAL/Interval_nt.h>
 
@@ -14,6 +16,7 @@ namespace apollonius {
 
 using Interval = CGAL::Interval_nt<false>;
 using Exact = CGAL::Gmpzf;
+using Rational = CGAL::Gmpq;
 
 inline Sign certain_sign(const Interval& x) {
   if (x.inf() > 0) return Sign::POSITIVE;
@@ -23,6 +26,7 @@ inline Sign certain_sign(const Interval& x) {
 }
 
 inline Sign certain_sign(const Exact& x) { return static_cast<Sign>(static_cast<int>(x.sign())); }
+inline Sign certain_sign(const Rational& x) { return static_cast<Sign>(CGAL::sign(x)); }
 
 // The floating path (`--arith float`, no filter and no exact stage): the computed sign, taken as it is.
 inline Sign certain_sign(double x) { return x > 0 ? Sign::POSITIVE : x < 0 ? Sign::NEGATIVE : Sign::ZERO; }

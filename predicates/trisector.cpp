@@ -1,0 +1,243 @@
+#include "predicates/trisector.h"
+
+#include <stdexcept>
+
+#include "predicates/rounding_guard.h"
+
+namespace apollonius {
+namespace {
+
+template <class NT>
+Sign sign_of(const NT& x) {
+  return certain_sign(x);
+}
+
+// The sign if NT decides it, else nothing (an Interval that straddles 0).
+template <class NT>
+std::optional<Sign> sign_if_certain(const NT& x) {
+  try {
+    return certain_sign(x);
+  } catch (const Uncertain_sign&) {
+    return std::nullopt;
+  }
+}
+
+template <class NT>
+Vector4<NT> minus(const Vector4<NT>& x, const Vector4<NT>& y) {
+  return {x[0] - y[0], x[1] - y[1], x[2] - y[2], x[3] - y[3]};
+}
+
+template <class NT>
+Vector4<NT> scaled(const NT& s, const Vector4<NT>& x) {
+  return {s * x[0], s * x[1], s * x[2], s * x[3]};
+}
+
+}  // namespace
+
+const char* to_string(Curve_shape shape) {
+  switch (shape) {
+    case Curve_shape::none: return "none";
+    case Curve_shape::point: return "point";
+    case Curve_shape::ellipse: return "ellipse";
+    case Curve_shape::hyperbola: return "hyperbola";
+    case Curve_shape::parabola: return "parabola";
+    case Curve_shape::line: return "line";
+    case Curve_shape::circle: return "circle";
+  }
+  return "none";
+}
+
+template <class NT>
+Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
+  Trisector_geometry<NT> g;
+  for (int m = 0; m < 2; ++m) {
+    const Relative_site<NT> r = relative_site<NT>(sites[0], sites[m + 1]);
+    g.rows[m] = r.row;
+    g.heights[m] = r.rhs;
+  }
+  const Vector4<NT>&rb = g.rows[0], &rc = g.rows[1];
+
+  // A pair of columns (i, j) whose 2x2 minor is certainly not 0; rank < 2 means no point at all (two of
+  // the sites would coincide, and they are distinct).
+  int pivot_i = -1, pivot_j = -1;
+  NT minor(0);
+  bool uncertain = false;
+  for (int i = 0; i < 4 && pivot_i < 0; ++i)
+    for (int j = i + 1; j < 4 && pivot_i < 0; ++j) {
+      const NT m = rb[i] * rc[j] - rb[j] * rc[i];
+      const std::optional<Sign> s = sign_if_certain(m);
+      if (!s) {
+        uncertain = true;
+      } else if (*s != Sign::ZERO) {
+        pivot_i = i, pivot_j = j, minor = m;
+      }
+    }
+  if (pivot_i < 0) {
+    if (uncertain) throw Uncertain_sign();
+    return g;  // empty
+  }
+  std::array<int, 2> free{};
+  for (int k = 0, t = 0; k < 4; ++k)
+    if (k != pivot_i && k != pivot_j) free[t++] = k;
+
+  // Cramer on the pivot columns: the direction f_k has f_k[k] = 1 and 0 in the other free column; the point
+  // has 0 in both free columns.
+  const auto solve = [&](const NT& right_b, const NT& right_c, Vector4<NT>& x) {
+    x[pivot_i] = (right_b * rc[pivot_j] - right_c * rb[pivot_j]) / minor;
+    x[pivot_j] = (rb[pivot_i] * right_c - rc[pivot_i] * right_b) / minor;
+  };
+  std::array<Vector4<NT>, 2> f;
+  for (int t = 0; t < 2; ++t) {
+    f[t] = {NT(0), NT(0), NT(0), NT(0)};
+    f[t][free[t]] = NT(1);
+    solve(-rb[free[t]], -rc[free[t]], f[t]);
+  }
+  g.point = {NT(0), NT(0), NT(0), NT(0)};
+  solve(g.heights[0], g.heights[1], g.point);
+
+  const NT g11 = lorentz_product(f[0], f[0]), g12 = lorentz_product(f[0], f[1]), g22 = lorentz_product(f[1], f[1]);
+  const Sign determinant = sign_of(g11 * g22 - g12 * g12);
+  const bool equal_weights = sign_of(rb[3]) == Sign::ZERO && sign_of(rc[3]) == Sign::ZERO;
+  const Vector4<NT> ab{rb[0], rb[1], rb[2], NT(0)}, ac{rc[0], rc[1], rc[2], NT(0)};
+  const bool collinear_centres = sign_of(ab[1] * ac[2] - ab[2] * ac[1]) == Sign::ZERO &&
+                                 sign_of(ab[2] * ac[0] - ab[0] * ac[2]) == Sign::ZERO &&
+                                 sign_of(ab[0] * ac[1] - ab[1] * ac[0]) == Sign::ZERO;
+
+  if (determinant == Sign::ZERO) {
+    // The axis kappa spans the kernel of the restricted form; e2 completes the basis.
+    if (sign_of(g11) != Sign::ZERO) {
+      g.e1 = combination(g11, f[1], -g12, f[0]);
+      g.e2 = f[0];
+    } else if (sign_of(g22) != Sign::ZERO) {
+      g.e1 = combination(g22, f[0], -g12, f[1]);
+      g.e2 = f[1];
+    } else {
+      throw std::logic_error("trisector: a plane of directions isotropic for the Lorentz product");
+    }
+    g.gamma1 = NT(0);
+    g.gamma2 = lorentz_product(g.e2, g.e2);
+    g.monotone = g.e2;
+    // X = point + s e1 + t e2 on the cone: 2 s <point, e1> = -(<point, point> + 2 t <point, e2> + t^2 gamma2),
+    // so both ends go to infinity along s e1 with sign(s) = -sign(gamma2) sign(<point, e1>): on the sheet
+    // iff that times sign(e1_3) is positive (e1 is null, so e1_3 != 0).
+    const Sign axis_side = -(sign_of(g.gamma2) * sign_of(lorentz_product(g.point, g.e1)));
+    const Sign axis_height = sign_of(g.e1[3]);
+    if (axis_side == Sign::ZERO || axis_height == Sign::ZERO)
+      throw std::logic_error("trisector: a parabola through the apex of the cone");
+    if (axis_side * axis_height == Sign::POSITIVE) {
+      g.kind = Trisector_kind::parabola;
+      g.shape = Curve_shape::parabola;
+    }
+    return g;
+  }
+
+  // An orthogonal basis for <,>, by one Gram-Schmidt step (rational: no normalization).
+  if (sign_of(g11) != Sign::ZERO) {
+    g.e1 = f[0];
+    g.e2 = combination(g11, f[1], -g12, f[0]);
+  } else if (sign_of(g22) != Sign::ZERO) {
+    g.e1 = f[1];
+    g.e2 = combination(g22, f[0], -g12, f[1]);
+  } else {  // f0 and f1 null, <f0, f1> != 0
+    g.e1 = combination(NT(1), f[0], NT(1), f[1]);
+    g.e2 = combination(NT(1), f[0], NT(-1), f[1]);
+  }
+  g.gamma1 = lorentz_product(g.e1, g.e1);
+  g.gamma2 = lorentz_product(g.e2, g.e2);
+  g.centre = minus(minus(g.point, scaled(lorentz_product(g.point, g.e1) / g.gamma1, g.e1)),
+                   scaled(lorentz_product(g.point, g.e2) / g.gamma2, g.e2));
+  g.K = -lorentz_product(g.centre, g.centre);
+  const Sign k = sign_of(g.K);
+
+  if (determinant == Sign::POSITIVE) {
+    if (sign_of(g.gamma1) != Sign::POSITIVE || sign_of(g.gamma2) != Sign::POSITIVE)
+      throw std::logic_error("trisector: a negative definite plane for the Lorentz product");
+    // The curve lies on one sheet, and so does its centre.
+    if (k == Sign::NEGATIVE || sign_of(g.centre[3]) != Sign::POSITIVE) return g;
+    g.kind = k == Sign::ZERO ? Trisector_kind::point : Trisector_kind::ellipse;
+    g.shape = k == Sign::ZERO ? Curve_shape::point : collinear_centres ? Curve_shape::circle : Curve_shape::ellipse;
+    return g;
+  }
+
+  // A hyperbola: its two branches lie on opposite sheets, so at the branch vertices C +- sqrt(K / gamma) e
+  // (e the axis whose gamma has the sign of K) X_3 has opposite signs, and the branch on X_3 > 0 is the one
+  // on the side of sign(e_3).
+  if (k == Sign::ZERO) throw std::logic_error("trisector: a hyperbola through the apex of the cone");
+  g.kind = Trisector_kind::hyperbola;
+  g.shape = equal_weights ? Curve_shape::line : Curve_shape::hyperbola;
+  g.branch_axis = k == sign_of(g.gamma1) ? 1 : 2;
+  g.branch_sign = sign_of(g.branch_axis == 1 ? g.e1[3] : g.e2[3]);
+  if (g.branch_sign == Sign::ZERO) throw std::logic_error("trisector: both branches on one sheet");
+  g.monotone = g.branch_axis == 1 ? g.e2 : g.e1;
+  return g;
+}
+
+template Trisector_geometry<Interval> trisector_geometry<Interval>(const std::array<Site, 3>&);
+template Trisector_geometry<Rational> trisector_geometry<Rational>(const std::array<Site, 3>&);
+
+Root_number<Rational> lorentz_value(const Field_point<Rational>& p, const Vector4<Rational>& y) {
+  Rational a = 0, b = 0;
+  for (int j = 0; j < 4; ++j) {
+    const Rational term_a = p.scaled[j].a * y[j], term_b = p.scaled[j].b * y[j];
+    a += j < 3 ? term_a : -term_a;
+    b += j < 3 ? term_b : -term_b;
+  }
+  return {a, b, p.discriminant, p.denominator};
+}
+
+Root_number<Rational> euclidean_value(const Field_point<Rational>& p, const Vector4<Rational>& y, const Rational& c) {
+  Rational a = c * p.denominator, b = 0;
+  for (int j = 0; j < 4; ++j) {
+    a += p.scaled[j].a * y[j];
+    b += p.scaled[j].b * y[j];
+  }
+  return {a, b, p.discriminant, p.denominator};
+}
+
+Trisector::Trisector(const std::array<Site_index, 3>& indices, const std::array<Site, 3>& sites)
+    : indices_(indices), sites_(sites) {
+  Rounding_guard guard;
+  try {
+    interval_ = trisector_geometry<Interval>(sites);
+  } catch (const Uncertain_sign&) {
+  }
+}
+
+template <>
+const Trisector_geometry<Interval>& Trisector::geometry<Interval>() const {
+  if (!interval_) throw Uncertain_sign();
+  return *interval_;
+}
+
+template <>
+const Trisector_geometry<Rational>& Trisector::geometry<Rational>() const {
+  if (!rational_) rational_ = std::make_shared<const Trisector_geometry<Rational>>(trisector_geometry<Rational>(sites_));
+  return *rational_;
+}
+
+template <>
+Field_point<Interval> field_point<Interval>(const Vertex& v, const Site& a) {
+  const Vertex_coordinates<Interval>& X = v.coordinates<Interval>();
+  const Site& o = v.origin();
+  const Interval two(2);
+  return {{X.scaled[0] + two * (Interval(o.x) - Interval(a.x)), X.scaled[1] + two * (Interval(o.y) - Interval(a.y)),
+           X.scaled[2] + two * (Interval(o.z) - Interval(a.z)), X.scaled[3] + two * (Interval(o.w) - Interval(a.w))}};
+}
+
+template <>
+Field_point<Rational> field_point<Rational>(const Vertex& v, const Site& a) {
+  const Vertex_coordinates<Exact>& X = v.coordinates<Exact>();
+  const Site& o = v.origin();
+  Field_point<Rational> p;
+  p.denominator = to_rational(X.denominator);
+  p.discriminant = to_rational(X.discriminant);
+  const double shift[4] = {o.x, o.y, o.z, o.w};
+  const double base[4] = {a.x, a.y, a.z, a.w};
+  for (int j = 0; j < 4; ++j) {
+    const Rational offset = Rational(2) * (Rational(shift[j]) - Rational(base[j]));
+    p.scaled[j] = {to_rational(X.scaled[j].a) + offset * p.denominator, to_rational(X.scaled[j].b)};
+  }
+  return p;
+}
+
+}  // namespace apollonius

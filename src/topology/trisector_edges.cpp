@@ -1,0 +1,108 @@
+#include "topology/trisector_edges.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "predicates/trisector_predicates.h"
+
+namespace apollonius {
+namespace {
+
+// One departure, as its curve sees it.
+struct Departure_on_curve {
+  std::size_t vertex;
+  int direction;
+  const std::vector<Site_index>* tie_set;
+};
+
+std::string describe(const std::array<Site_index, 3>& triple) {
+  return std::to_string(triple[0]) + " " + std::to_string(triple[1]) + " " + std::to_string(triple[2]);
+}
+
+// The edges of one curve from its departures, sorted along it.
+void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shape shape, const Diagram& diagram,
+                     std::vector<Departure_on_curve>& on_curve, std::vector<Diagram_edge>& out) {
+  // Along the curve; at one vertex the arriving edge (backward) comes before the leaving one.
+  std::sort(on_curve.begin(), on_curve.end(), [&](const Departure_on_curve& x, const Departure_on_curve& y) {
+    if (x.vertex != y.vertex) {
+      const Sign s = compare_along_trisector(trisector, diagram.vertices[x.vertex].vertex, diagram.vertices[y.vertex].vertex);
+      if (s != Sign::ZERO) return s == Sign::NEGATIVE;
+      throw std::logic_error("two vertices at one point of the trisector " + describe(trisector.indices()));
+    }
+    return x.direction < y.direction;
+  });
+  const std::size_t n = on_curve.size();
+  const bool closed = kind == Trisector_kind::ellipse;
+  if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola)
+    throw std::logic_error("departures along the trisector " + describe(trisector.indices()) + ", which is no curve");
+  for (std::size_t i = 0; i < n; ++i) {
+    const Departure_on_curve& d = on_curve[i];
+    const bool has_next = closed || i + 1 < n;
+    const Departure_on_curve* next = has_next ? &on_curve[(i + 1) % n] : nullptr;
+    const bool has_previous = closed || i > 0;
+    const Departure_on_curve* previous = has_previous ? &on_curve[(i + n - 1) % n] : nullptr;
+    // Leaving forward: the next departure arrives (leaves backward), or the curve goes to infinity.
+    if (d.direction > 0) {
+      if (next != nullptr && next->direction > 0)
+        throw std::logic_error("two edges leave forward in a row along the trisector " + describe(trisector.indices()));
+      if (next != nullptr && *next->tie_set != *d.tie_set)
+        throw std::logic_error("an edge changes its tie set along the trisector " + describe(trisector.indices()));
+      Diagram_edge e;
+      e.tie_set = *d.tie_set;
+      e.curve = shape;
+      e.start = d.vertex;
+      if (next != nullptr) e.end = next->vertex;
+      out.push_back(std::move(e));
+    } else if (previous == nullptr) {  // arriving from infinity
+      Diagram_edge e;
+      e.tie_set = *d.tie_set;
+      e.curve = shape;
+      e.end = d.vertex;
+      out.push_back(std::move(e));
+    } else if (previous->direction < 0) {
+      throw std::logic_error("two edges leave backward in a row along the trisector " + describe(trisector.indices()));
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
+                                                 const std::vector<std::vector<Departure>>& departures, int threads) {
+  // Group by curve: (triple, vertex, direction, tie set), sorted by triple.
+  struct Entry {
+    std::array<Site_index, 3> triple;
+    Departure_on_curve departure;
+  };
+  std::vector<Entry> entries;
+  for (std::size_t v = 0; v < departures.size(); ++v)
+    for (const Departure& d : departures[v]) entries.push_back({d.triple, {v, d.direction, &d.tie_set}});
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) { return x.triple < y.triple; });
+  std::vector<std::size_t> group_start;
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
+  group_start.push_back(entries.size());
+
+  std::vector<std::vector<Diagram_edge>> by_curve(group_start.size() - 1);
+  tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, by_curve.size(), [&](std::size_t g) {
+      const std::array<Site_index, 3>& triple = entries[group_start[g]].triple;
+      const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+      const auto [kind, shape] = classify_trisector(trisector);
+      std::vector<Departure_on_curve> on_curve;
+      for (std::size_t i = group_start[g]; i < group_start[g + 1]; ++i) on_curve.push_back(entries[i].departure);
+      pair_departures(trisector, kind, shape, diagram, on_curve, by_curve[g]);
+    });
+  });
+  std::vector<Diagram_edge> edges;
+  for (auto& list : by_curve)
+    for (Diagram_edge& e : list) edges.push_back(std::move(e));
+  return edges;
+}
+
+}  // namespace apollonius

@@ -1,0 +1,23 @@
+// Edges from the vertices on their curves (paper section 5.3): every edge with a vertex leaves one of its
+// ends forward along the trisector of its three smallest sites, and arrives at the next vertex on that
+// curve whose edges leave it backward, or goes to infinity; on a closed curve the next vertex comes
+// around. Why the next one: an arc in the diagram keeps its tie set until a vertex, and a vertex where an
+// arc of the curve in the diagram ends has that arc among its departures; so between a departure and the
+// next departure on the curve no vertex ends it, and the vertices on the curve with no departure along it
+// have no arc of it in the diagram on either side.
+#pragma once
+
+#include <vector>
+
+#include "topology/topology.h"
+#include "topology/vertex_fan.h"
+
+namespace apollonius {
+
+// The edges through the departures of every vertex (departures[v] for vertex id v), sorted as
+// Diagram_topology's. Throws std::logic_error if the departures along some curve do not alternate
+// (leaving, arriving), which would be a defect.
+std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
+                                                 const std::vector<std::vector<Departure>>& departures, int threads);
+
+}  // namespace apollonius

@@ -1,0 +1,26 @@
+// The edges that leave a vertex (paper section 4.1, eqs. 25-28). For three sites T of the vertex's tie set
+// S, the arc of T's trisector on one side of the vertex belongs to the diagram exactly when every other
+// site of S is farther there (sides_near_vertex: exact, to second order) or ties along the whole curve,
+// joining the edge's tie set; sites outside S are farther near the vertex anyway. A generic vertex
+// (|S| = 4) has four edges, one per triple. For |S| = k the enumeration costs O(k^3) triples, each
+// dropped as soon as two sites disagree, at most k - 3 predicates each.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "diagram/diagram.h"
+
+namespace apollonius {
+
+// Invariants: triple is the three smallest sites of tie_set, which is ascending and lies in the vertex's.
+struct Departure {
+  std::array<Site_index, 3> triple;
+  std::vector<Site_index> tie_set;
+  int direction = 0;  // +1: the edge leaves forward along the triple's trisector (trisector.h); -1: backward
+};
+
+// Every edge leaving v, each once (from the smallest triple of its tie set), in a fixed order.
+std::vector<Departure> vertex_departures(const std::vector<Site>& sites, const Diagram_vertex& v);
+
+}  // namespace apollonius
