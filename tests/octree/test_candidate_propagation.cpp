@@ -152,7 +152,8 @@ void check_input(Site_family family, std::size_t n, std::uint64_t seed, Totals& 
     }
     ids.push_back(id);
     boxes.push_back(partition.box(id));
-    CHECK(std::adjacent_find(list.begin(), list.end(), [](Site_index p, Site_index q) { return p >= q; }) == list.end());
+    const auto not_ascending = [](Site_index p, Site_index q) { return p >= q; };
+    CHECK(std::adjacent_find(list.begin(), list.end(), not_ascending) == list.end());
     for (Site_index s : list) CHECK(std::binary_search(in.active.begin(), in.active.end(), s));
     totals.candidates += list.size();
   }
@@ -228,8 +229,8 @@ TEST_CASE("the exact comparison of weighted distances decides ties and near-ties
       {{1, 1, 0, 0}, {0, 0, 0, -1.4142135623730949}, 1},   // the double below sqrt(2)
   };
   for (const Case& c : cases) {
-    INFO("sites (", c.i.x, ", ", c.i.y, ", ", c.i.z, ", ", c.i.w, ") and (", c.j.x, ", ", c.j.y, ", ", c.j.z, ", ", c.j.w,
-         ")");
+    INFO("sites (", c.i.x, ", ", c.i.y, ", ", c.i.z, ", ", c.i.w, ") and (", c.j.x, ", ", c.j.y, ", ", c.j.z, ", ",
+         c.j.w, ")");
     CHECK(compare_distances(origin, c.i, c.j) == c.expected);
     CHECK(compare_distances(origin, c.j, c.i) == -c.expected);
   }
