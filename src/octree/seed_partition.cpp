@@ -190,7 +190,12 @@ void Seed_partition::append_face_neighbours(std::size_t id, std::vector<std::siz
 std::size_t Seed_partition::home(const Site& s) const {
   const double c[3] = {s.x, s.y, s.z};
   Index3 k;
-  for (int a = 0; a < 3; ++a) k[a] = static_cast<std::int64_t>(std::floor(c[a] / unit_[0]));
+  for (int a = 0; a < 3; ++a) {
+    // c / unit is exact (unit is a power of two) unless it underflows: a negative c that tiny gives -0,
+    // whose floor 0 names the cube above c; k unit is exact, so the comparison repairs it.
+    k[a] = static_cast<std::int64_t>(std::floor(c[a] / unit_[0]));
+    if (static_cast<double>(k[a]) * unit_[0] > c[a]) --k[a];
+  }
   return id_of(0, k);
 }
 

@@ -1,7 +1,7 @@
 // Seed_partition (octree/seed_partition.h) box by box, on inputs of every generator family: the boxes
 // tile the root box (exact volumes sum to its volume, no two overlap), the face-neighbour lists hold
 // exactly the boxes sharing a piece of face of positive area, every home is a box of the finest level
-// that contains its site's centre (but for a known bug, below), touches_root_boundary is true exactly
+// that contains its site's centre, touches_root_boundary is true exactly
 // for the boxes with a face on the root box's boundary, and the root box holds the promised ball. Every
 // fact is checked from the boxes' corners and the centres alone, by comparisons of doubles (exact) and
 // sums and products in Exact.
@@ -79,7 +79,7 @@ std::size_t homes_missing_their_centre(const std::vector<Site>& sites, const std
 }
 
 struct Totals {
-  std::size_t partitions = 0, boxes = 0, neighbour_pairs = 0, boundary_boxes = 0, homes = 0, homes_of_known_bug = 0;
+  std::size_t partitions = 0, boxes = 0, neighbour_pairs = 0, boundary_boxes = 0, homes = 0, homes_of_underflow = 0;
 };
 
 // Checks every documented property of the partition of `sites` (restricted to `active`).
@@ -172,8 +172,8 @@ void check_partition(const std::vector<Site>& sites, const std::vector<Site_inde
     }
   }
 
-  // Homes: boxes of the finest level (level 0) that contain their centres, except where the known bug
-  // (below) strikes: a negative coordinate whose quotient by the side underflows to -0.
+  // Homes: boxes of the finest level (level 0) that contain their centres, including where a negative
+  // coordinate's quotient by the side underflows to -0 (the regression below).
   for (Site_index s : active) {
     CAPTURE(s);
     const std::size_t home = partition.home(sites[s]);
@@ -182,10 +182,7 @@ void check_partition(const std::vector<Site>& sites, const std::vector<Site_inde
     const Axis_box b = partition.box(home);
     CHECK(b.hi[0] - b.lo[0] == smallest_side);
     const double c[3] = {sites[s].x, sites[s].y, sites[s].z};
-    if (std::any_of(c, c + 3, [&](double x) { return x < 0 && x / smallest_side == 0; })) {
-      ++totals.homes_of_known_bug;
-      continue;
-    }
+    if (std::any_of(c, c + 3, [&](double x) { return x < 0 && x / smallest_side == 0; })) ++totals.homes_of_underflow;
     INFO("centre (", c[0], ", ", c[1], ", ", c[2], "), home ", home, " = [", b.lo[0], ", ", b.hi[0], "] x [", b.lo[1],
          ", ", b.hi[1], "] x [", b.lo[2], ", ", b.hi[2], "]");
     CHECK(contains(b, sites[s]));
@@ -241,18 +238,17 @@ TEST_CASE("seed boxes tile the root box, neighbours share faces, homes are fines
   }
   MESSAGE(totals.partitions, " partitions, ", totals.boxes, " boxes, ", totals.neighbour_pairs,
           " neighbour pairs, ", totals.boundary_boxes, " boxes on the root boundary, ", totals.homes,
-          " homes checked, ", totals.homes_of_known_bug, " left to the known bug's test");
+          " homes checked, ", totals.homes_of_underflow, " of them where the quotient underflows");
   CHECK(totals.partitions == expected_partitions);
   CHECK(totals.partitions >= std::size(kSiteFamilies) * 4 * 2 * 2);
-  CHECK(totals.homes > 20 * totals.homes_of_known_bug);  // the exclusion stays rare
+  CHECK(totals.homes_of_underflow > 0);  // the regression's case occurs in the families
 }
 
-// Known bug, found by this test: Seed_partition::home computes floor(c / s) for the cube side s, and the
+// Regression, found by this test: Seed_partition::home computed floor(c / s) for the cube side s, and the
 // quotient rounds to -0 when c < 0 and |c| <= s 2^-1075, e.g. c = -denorm_min with s = 8 (lattice-noise)
-// or c = -1.8e-104 among sites 2^805 apart (wide-range). floor(-0) = 0 then names the box [0, s] above
-// the centre, which lies in [-s, 0]. should_fail keeps the suite green until home is fixed; the fix makes
-// this test case fail, as a reminder to drop should_fail.
-TEST_CASE("the home box contains its site's centre" * doctest::should_fail()) {
+// or c = -1.8e-104 among sites 2^805 apart (wide-range). floor(-0) = 0 named the box [0, s] above the
+// centre, which lies in [-s, 0].
+TEST_CASE("regression: seed_partition_home_above_tiny_negative_centre") {
   std::size_t inputs = 0, missing = 0;
   {  // the smallest case: one coordinate -denorm_min, cubes of side 2
     const double tiny = std::numeric_limits<double>::denorm_min();
