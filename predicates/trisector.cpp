@@ -12,16 +12,6 @@ Sign sign_of(const NT& x) {
   return certain_sign(x);
 }
 
-// The sign if NT decides it, else nothing (an Interval that straddles 0).
-template <class NT>
-std::optional<Sign> sign_if_certain(const NT& x) {
-  try {
-    return certain_sign(x);
-  } catch (const Uncertain_sign&) {
-    return std::nullopt;
-  }
-}
-
 template <class NT>
 Vector4<NT> minus(const Vector4<NT>& x, const Vector4<NT>& y) {
   return {x[0] - y[0], x[1] - y[1], x[2] - y[2], x[3] - y[3]};
@@ -57,25 +47,17 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
   }
   const Vector4<NT>&rb = g.rows[0], &rc = g.rows[1];
 
-  // A pair of columns (i, j) whose 2x2 minor is certainly not 0; rank < 2 means no point at all (two of
-  // the sites would coincide, and they are distinct).
+  // The first pair of columns (i, j) whose 2x2 minor is not 0, in a fixed order, so that the filter and the
+  // exact stage build the same basis (and so the same forward direction); rank < 2 means no point at all
+  // (two of the sites would coincide, and they are distinct).
   int pivot_i = -1, pivot_j = -1;
   NT minor(0);
-  bool uncertain = false;
   for (int i = 0; i < 4 && pivot_i < 0; ++i)
     for (int j = i + 1; j < 4 && pivot_i < 0; ++j) {
       const NT m = rb[i] * rc[j] - rb[j] * rc[i];
-      const std::optional<Sign> s = sign_if_certain(m);
-      if (!s) {
-        uncertain = true;
-      } else if (*s != Sign::ZERO) {
-        pivot_i = i, pivot_j = j, minor = m;
-      }
+      if (sign_of(m) != Sign::ZERO) pivot_i = i, pivot_j = j, minor = m;
     }
-  if (pivot_i < 0) {
-    if (uncertain) throw Uncertain_sign();
-    return g;  // empty
-  }
+  if (pivot_i < 0) return g;  // empty
   std::array<int, 2> free{};
   for (int k = 0, t = 0; k < 4; ++k)
     if (k != pivot_i && k != pivot_j) free[t++] = k;
@@ -221,7 +203,7 @@ Field_point<Interval> field_point<Interval>(const Vertex& v, const Site& a) {
   const Site& o = v.origin();
   const Interval two(2);
   return {{X.scaled[0] + two * (Interval(o.x) - Interval(a.x)), X.scaled[1] + two * (Interval(o.y) - Interval(a.y)),
-           X.scaled[2] + two * (Interval(o.z) - Interval(a.z)), X.scaled[3] + two * (Interval(o.w) - Interval(a.w))}};
+           X.scaled[2] + two * (Interval(o.z) - Interval(a.z)), X.scaled[3] + two * (Interval(a.w) - Interval(o.w))}};
 }
 
 template <>
@@ -231,8 +213,9 @@ Field_point<Rational> field_point<Rational>(const Vertex& v, const Site& a) {
   Field_point<Rational> p;
   p.denominator = to_rational(X.denominator);
   p.discriminant = to_rational(X.discriminant);
-  const double shift[4] = {o.x, o.y, o.z, o.w};
-  const double base[4] = {a.x, a.y, a.z, a.w};
+  // X_a = X_o + 2 (p_o - p_a, w_a - w_o): the weight enters r + w with the other sign.
+  const double shift[4] = {o.x, o.y, o.z, a.w};
+  const double base[4] = {a.x, a.y, a.z, o.w};
   for (int j = 0; j < 4; ++j) {
     const Rational offset = Rational(2) * (Rational(shift[j]) - Rational(base[j]));
     p.scaled[j] = {to_rational(X.scaled[j].a) + offset * p.denominator, to_rational(X.scaled[j].b)};

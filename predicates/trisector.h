@@ -129,7 +129,7 @@ const Trisector_geometry<Interval>& Trisector::geometry<Interval>() const;
 template <>
 const Trisector_geometry<Rational>& Trisector::geometry<Rational>() const;
 
-// The vertex in the trisector's coordinates X = 2 (v - p_a, r + w_a): X_o + 2 (p_o - p_a, w_o - w_a) for
+// The vertex in the trisector's coordinates X = 2 (v - p_a, r + w_a): X_o + 2 (p_o - p_a, w_a - w_o) for
 // the vertex's own origin o.
 template <class NT>
 Field_point<NT> field_point(const Vertex& v, const Site& a);

@@ -6,10 +6,15 @@
 //  - sides_near_vertex(T, v, s): the sign of d_s - r just after v and just before it, to second order.
 #pragma once
 
+#include <CGAL/Sqrt_extension.h>
+
+#include <algorithm>
 #include <utility>
+#include <vector>
 
 #include "predicates/compare_vertices.h"
 #include "predicates/filtered_predicate.h"
+#include "predicates/curve_point.h"
 #include "predicates/trisector.h"
 
 namespace apollonius {
@@ -33,10 +38,10 @@ struct Compare_along_trisector_predicate {
   static constexpr const char* name = "compare_along_trisector";
   using Exact_number = Rational;
 
-  template <class NT>
-  static Sign evaluate(const Trisector& t, const Vertex& u, const Vertex& v) {
+  template <class NT, class U, class V>
+  static Sign evaluate(const Trisector& t, const U& u, const V& v) {
     const Trisector_geometry<NT>& g = t.geometry<NT>();
-    const Field_point<NT> p = field_point<NT>(u, t.origin()), q = field_point<NT>(v, t.origin());
+    const Field_point<NT> p = field_point_on<NT>(t, u), q = field_point_on<NT>(t, v);
     if (g.kind != Trisector_kind::ellipse)
       return compare_numbers(lorentz_value(p, g.monotone), lorentz_value(q, g.monotone));
     const int half_p = half(g, p), half_q = half(g, q);
@@ -62,10 +67,10 @@ struct Departure_sign_predicate {
   static constexpr const char* name = "departure_sign";
   using Exact_number = Rational;
 
-  template <class NT>
-  static Sign evaluate(const Trisector& t, const Vertex& v, const Site& s) {
+  template <class NT, class P>
+  static Sign evaluate(const Trisector& t, const P& v, const Site& s) {
     const Trisector_geometry<NT>& g = t.geometry<NT>();
-    const Field_point<NT> p = field_point<NT>(v, t.origin());
+    const Field_point<NT> p = field_point_on<NT>(t, v);
     const Vector4<NT> r = relative_site<NT>(t.origin(), s).row;
     const Vector4<NT> y = combination(euclidean_product(r, g.e2), g.e1, -euclidean_product(r, g.e1), g.e2);
     const Sign along_tau0 = -sign_of_number(lorentz_value(p, y));
@@ -87,12 +92,12 @@ struct Sides_near_vertex_predicate {
   static constexpr const char* name = "sides_near_vertex";
   using Exact_number = Rational;
 
-  template <class NT>
-  static std::pair<Sign, Sign> evaluate(const Trisector& t, const Vertex& v, const Site& s) {
+  template <class NT, class P>
+  static std::pair<Sign, Sign> evaluate(const Trisector& t, const P& v, const Site& s) {
     const Sign first = Departure_sign_predicate::evaluate<NT>(t, v, s);
     if (first != Sign::ZERO) return {first, -first};
     const Trisector_geometry<NT>& g = t.geometry<NT>();
-    const Field_point<NT> p = field_point<NT>(v, t.origin());
+    const Field_point<NT> p = field_point_on<NT>(t, v);
     const Vector4<NT> r = relative_site<NT>(t.origin(), s).row;
     Sign along = sign_of_number(lorentz_value(p, g.e1));
     Sign across = certain_sign(euclidean_product(r, g.e1));
@@ -106,7 +111,95 @@ struct Sides_near_vertex_predicate {
   }
 };
 
+// Predicate curve_point_conflict(p, s): the sign of d_s(p) - r(p) at a point of a trisector, as
+// vertex_conflict for a vertex: POSITIVE if r + w_s < 0, else the sign of h_s - R_s . X.
+struct Curve_point_conflict_predicate {
+  static constexpr const char* name = "curve_point_conflict";
+  using Exact_number = Rational;
+
+  template <class NT>
+  static Sign evaluate(const Curve_point& c, const Site& s) {
+    const Trisector& t = c.trisector();
+    const Field_point<NT> p = c.coordinates<NT>();
+    const Relative_site<NT> r = relative_site<NT>(t.origin(), s);
+    // r + w_s = X_3 / 2 + (w_s - w_a).
+    if (sign_of_number(euclidean_value(p, Vector4<NT>{NT(0), NT(0), NT(0), NT(1)}, NT(2) * r.row[3])) == Sign::NEGATIVE)
+      return Sign::POSITIVE;
+    const Vector4<NT> minus_row{-r.row[0], -r.row[1], -r.row[2], -r.row[3]};
+    return sign_of_number(euclidean_value(p, minus_row, r.rhs));
+  }
+};
+
+// The cyclic order of the sites tied along an edge (4 or more: a degenerate edge), around it: at a
+// vertex v on the edge, the order of the directions v - p_s around the edge's forward tangent (positive
+// turns counterclockwise seen from its head). Consecutive sites in it, and only they, share a face
+// along the edge. Returns the positions in `sites` in that order, starting with the first.
+struct Order_around_edge_predicate {
+  static constexpr const char* name = "order_around_edge";
+  using Exact_number = Rational;
+  using Extension = CGAL::Sqrt_extension<Rational, Rational, CGAL::Tag_true, CGAL::Tag_false>;
+
+  template <class NT>
+  static std::vector<std::size_t> evaluate(const Trisector& t, const Vertex& v, const std::vector<Site>& sites) {
+    using F = std::conditional_t<std::is_same_v<NT, Rational>, Extension, Interval>;
+    const Trisector_geometry<NT>& g = t.geometry<NT>();
+    const Field_point<NT> p = field_point_on<NT>(t, v);
+    const auto number = [&](const Field_number<NT>& x) -> F {
+      if constexpr (std::is_same_v<NT, Rational>)
+        return Extension(x.a / x.denominator, x.b / x.denominator, x.d);
+      else
+        return x;
+    };
+    // X_j = <X, J e_j>, with J e_j the Lorentz dual of the j-th unit vector.
+    std::array<F, 4> X;
+    for (int j = 0; j < 4; ++j) {
+      Vector4<NT> unit{NT(0), NT(0), NT(0), NT(0)};
+      unit[j] = j < 3 ? NT(1) : NT(-1);
+      X[j] = number(lorentz_value(p, unit));
+    }
+    const F s = number(lorentz_value(p, g.e1)), u = number(lorentz_value(p, g.e2));
+    std::array<F, 3> tangent;  // tau0 = <X, e1> e2 - <X, e2> e1, spatial part
+    for (int j = 0; j < 3; ++j) tangent[j] = s * F(g.e2[j]) - u * F(g.e1[j]);
+    const Site& a = t.origin();
+    std::vector<std::array<F, 3>> direction(sites.size());  // v - p_s = X / 2 + p_a - p_s
+    for (std::size_t k = 0; k < sites.size(); ++k) {
+      const Vector4<NT> shift = relative_site<NT>(sites[k], a).row;  // p_a - p_s, w_a - w_s
+      for (int j = 0; j < 3; ++j) direction[k][j] = X[j] / F(2) + F(shift[j]);
+    }
+    const auto turn = [&](std::size_t i, std::size_t j) {  // sign of det(tangent, d_i, d_j)
+      const auto& x = direction[i];
+      const auto& y = direction[j];
+      const F det = tangent[0] * (x[1] * y[2] - x[2] * y[1]) - tangent[1] * (x[0] * y[2] - x[2] * y[0]) +
+                    tangent[2] * (x[0] * y[1] - x[1] * y[0]);
+      if constexpr (std::is_same_v<NT, Rational>)
+        return static_cast<Sign>(CGAL::sign(det));
+      else
+        return certain_sign(det);
+    };
+    // Half 0: the first direction and those a positive turn from it; half 1: the rest (the opposite one
+    // first). The directions are distinct (distinct tangent points of one sphere) and no two opposite but
+    // possibly the first's.
+    const auto half = [&](std::size_t k) { return k == 0 || turn(0, k) == Sign::POSITIVE ? 0 : 1; };
+    std::vector<std::size_t> order(sites.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::vector<int> halves(sites.size());
+    for (std::size_t k = 0; k < sites.size(); ++k) halves[k] = half(k);
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+      if (halves[i] != halves[j]) return halves[i] < halves[j];
+      if (i == j) return false;
+      if (i == 0) return true;
+      if (j == 0) return false;
+      const Sign s_ij = turn(i, j);
+      if (s_ij == Sign::ZERO) return turn(0, i) == Sign::ZERO;  // the one opposite the first comes first
+      return s_ij == Sign::POSITIVE;
+    });
+    return order;
+  }
+};
+
 inline const Filtered_predicate<Classify_trisector_predicate> classify_trisector{};
+inline const Filtered_predicate<Order_around_edge_predicate> order_around_edge{};
+inline const Filtered_predicate<Curve_point_conflict_predicate> curve_point_conflict{};
 inline const Filtered_predicate<Compare_along_trisector_predicate> compare_along_trisector{};
 inline const Filtered_predicate<Departure_sign_predicate> departure_sign{};
 inline const Filtered_predicate<Sides_near_vertex_predicate> sides_near_vertex{};

@@ -10,7 +10,14 @@ struct Topology_options {
   int threads = 1;
 };
 
-// `diagram` must be the complete vertex diagram of `sites` (octree_diagram or brute_force_diagram).
-Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
+// The edges that have a vertex, from the complete vertex diagram of `sites` (octree_diagram or
+// brute_force_diagram). Faces and cells are left empty: the edges with no vertex and the faces' nesting
+// are the next steps (docs/design.md, "The whole diagram").
+Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
+
+// The faces and cells from the edges, for inputs whose pairs have one boundary component each; throws
+// std::logic_error for what it does not decide yet (several components of one pair, degenerate vertices
+// where one pair's faces meet more than two edges).
+void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology);
 
 }  // namespace apollonius

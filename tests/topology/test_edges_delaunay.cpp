@@ -100,7 +100,7 @@ std::string describe(const Edge_key& k) {
 // The brute force decides the vertices of the small degenerate inputs: the octree does not yet finish on some
 // of them (the open issue on many sites tangent to one sphere).
 void check_against_delaunay(const std::vector<Site>& sites, bool brute = false) {
-  const Diagram_topology t = build_topology(sites, brute ? brute_force_diagram(sites) : octree_diagram(sites));
+  const Diagram_topology t = build_edges(sites, brute ? brute_force_diagram(sites) : octree_diagram(sites));
   for (const Diagram_edge& e : t.edges) CHECK(e.curve == Curve_shape::line);
   const std::multiset<Edge_key> ours = our_edges(t), theirs = delaunay_edges(sites);
   std::vector<Edge_key> only_ours, only_theirs;

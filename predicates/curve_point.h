@@ -1,0 +1,50 @@
+// A point of a trisector that is no vertex: where the trisector's plane L meets the hyperplane
+// cut . X = offset (Euclidean product, rational cut and offset) on the cone. Like a vertex it lies in
+// Q(sqrt d), d the discriminant of the quadratic that the cut leaves, and it is held symbolically: the
+// predicates on trisectors take it as they take a vertex (field_point). Used for witness points of
+// vertex-free curves and for the crossings that group a face's boundaries.
+#pragma once
+
+#include <optional>
+
+#include "predicates/trisector.h"
+
+namespace apollonius {
+
+class Curve_point {
+ public:
+  // Precondition: `root` names an existing root of the cut (curve_points).
+  Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root)
+      : trisector_(&trisector), cut_(cut), offset_(offset), root_(root) {}
+
+  const Trisector& trisector() const { return *trisector_; }
+  Root root() const { return root_; }
+
+  template <class NT>
+  Field_point<NT> coordinates() const;
+
+ private:
+  const Trisector* trisector_;
+  Vector4<Rational> cut_;
+  Rational offset_;
+  Root root_;
+};
+
+// The points where the cut meets the cone within L (on either sheet, valid or not): none, one (SINGLE),
+// or MINUS and PLUS. Exact. Nothing when the cut contains all of L or misses it.
+std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset);
+
+// Whether the point is on the sheet X_3 > 0 (a point of the trisector, not of the other branch).
+bool on_sheet(const Curve_point& p);
+
+// The coordinates of a point of the trisector t (a vertex on it, or a curve point of it) in t's frame.
+template <class NT>
+Field_point<NT> field_point_on(const Trisector& t, const Vertex& v) {
+  return field_point<NT>(v, t.origin());
+}
+template <class NT>
+Field_point<NT> field_point_on(const Trisector&, const Curve_point& p) {
+  return p.coordinates<NT>();
+}
+
+}  // namespace apollonius

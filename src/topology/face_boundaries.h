@@ -1,0 +1,28 @@
+// The faces of the diagram from its edges (paper section 5.4). Along an edge with tie set T, the sites of
+// T that are consecutive around it (all three pairs when |T| = 3; order_around_edge otherwise) each
+// share a face, on that side of the edge: a half-edge (edge, pair). At a vertex, the half-edges of one
+// pair meet in twos, and a face's boundary goes from one to the other; walking so gives every boundary
+// component, closed or an open chain between two ends at infinity.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "topology/topology.h"
+
+namespace apollonius {
+
+// One boundary component of the faces of one pair: edge ids in order along it.
+struct Boundary_component {
+  Site_index a = 0, b = 0;
+  std::vector<std::size_t> edges;
+  bool closed = false;
+};
+
+// Every boundary component, by pair, then by first edge. Throws std::logic_error where the half-edges of
+// a pair at a vertex do not meet in twos (a configuration this version does not decide: reported, never
+// guessed).
+std::vector<Boundary_component> boundary_components(const std::vector<Site>& sites, const Diagram& diagram,
+                                                    const std::vector<Diagram_edge>& edges);
+
+}  // namespace apollonius
