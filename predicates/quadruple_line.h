@@ -46,8 +46,8 @@ struct Relative_site {
 // x - y for doubles x and y, in NT.
 template <class NT>
 NT difference_of(double x, double y) {
-  if constexpr (std::is_same_v<NT, Double_with_magnitude>)
-    return Double_with_magnitude::difference(x, y);
+  if constexpr (std::is_same_v<NT, Double_with_magnitude> || std::is_same_v<NT, Depth_count>)
+    return NT::difference(x, y);
   else
     return NT(x) - NT(y);
 }
