@@ -108,6 +108,11 @@ std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<
   return points;
 }
 
+bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut) {
+  const Trisector_geometry<Rational>& g = trisector.geometry<Rational>();
+  return certain_sign(euclidean_product(cut, g.e1)) == Sign::ZERO && certain_sign(euclidean_product(cut, g.e2)) == Sign::ZERO;
+}
+
 bool on_sheet(const Curve_point& p) {
   {
     Rounding_guard guard;

@@ -37,6 +37,10 @@ std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<
 // Whether the point is on the sheet X_3 > 0 (a point of the trisector, not of the other branch).
 bool on_sheet(const Curve_point& p);
 
+// Whether the hyperplane cut . X = offset contains the trisector's plane L or misses it for every offset
+// but one (the cut's normal is orthogonal to L's directions). Exact.
+bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut);
+
 // The coordinates of a point of the trisector t (a vertex on it, or a curve point of it) in t's frame.
 template <class NT>
 Field_point<NT> field_point_on(const Trisector& t, const Vertex& v) {

@@ -197,7 +197,67 @@ struct Order_around_edge_predicate {
   }
 };
 
+// Predicate face_side(p, a, b, c, level, across): at a point p of an edge where sites a, b, c tie, on which
+// side of the edge, moving on the bisector sheet of a and b within the plane level . v = constant, the
+// face of a and b lies: POSITIVE when it lies where across . v grows. There c is farther than a and b.
+// In X = 2 (v - p_a, r + w_a), the move xi keeps d_a = d_b (R_b . xi = 0), stays on the cone
+// (<X, xi> = 0) and in the level plane (level . xi = 0): xi is their 4D cross product, and c gets farther
+// along it where -R_c . xi > 0. Precondition: the edge crosses the level plane transversally at p.
+struct Face_side_predicate {
+  static constexpr const char* name = "face_side";
+  using Exact_number = Rational;
+  using Extension = CGAL::Sqrt_extension<Rational, Rational, CGAL::Tag_true, CGAL::Tag_false>;
+
+  template <class NT>
+  static Sign evaluate(const Curve_point& p, const Site& a, const Site& b, const Site& c,
+                       const std::array<Rational, 3>& level, const std::array<Rational, 3>& across) {
+    using F = std::conditional_t<std::is_same_v<NT, Rational>, Extension, Interval>;
+    const Trisector& t = p.trisector();
+    const Field_point<NT> x = p.coordinates<NT>();
+    // X in a's frame: X_o + 2 (p_o - p_a, w_a - w_o).
+    const Vector4<NT> shift = relative_site<NT>(a, t.origin()).row;
+    std::array<F, 4> X;
+    for (int j = 0; j < 4; ++j) {
+      const NT offset = NT(2) * (j < 3 ? shift[j] : -shift[j]);
+      if constexpr (std::is_same_v<NT, Rational>)
+        X[j] = Extension(x.scaled[j].a / x.denominator + offset, x.scaled[j].b / x.denominator, x.discriminant);
+      else
+        X[j] = x.X[j] + offset;
+    }
+    const Vector4<NT> rb = relative_site<NT>(a, b).row, rc = relative_site<NT>(a, c).row;
+    const auto number = [](const Rational& q) -> F {
+      if constexpr (std::is_same_v<NT, Rational>)
+        return F(q);
+      else
+        return Interval(CGAL::to_interval(q));
+    };
+    const std::array<std::array<F, 4>, 3> rows{{{F(rb[0]), F(rb[1]), F(rb[2]), F(rb[3])},
+                                                 {X[0], X[1], X[2], -X[3]},
+                                                 {number(level[0]), number(level[1]), number(level[2]), F(0)}}};
+    std::array<F, 4> xi;
+    for (int i = 0; i < 4; ++i) {
+      std::array<int, 3> c3{};
+      for (int j = 0, k = 0; j < 4; ++j)
+        if (j != i) c3[k++] = j;
+      const F minor = rows[0][c3[0]] * (rows[1][c3[1]] * rows[2][c3[2]] - rows[1][c3[2]] * rows[2][c3[1]]) -
+                      rows[0][c3[1]] * (rows[1][c3[0]] * rows[2][c3[2]] - rows[1][c3[2]] * rows[2][c3[0]]) +
+                      rows[0][c3[2]] * (rows[1][c3[0]] * rows[2][c3[1]] - rows[1][c3[1]] * rows[2][c3[0]]);
+      xi[i] = i % 2 == 0 ? minor : -minor;
+    }
+    const auto sign = [](const F& v) {
+      if constexpr (std::is_same_v<NT, Rational>)
+        return static_cast<Sign>(CGAL::sign(v));
+      else
+        return certain_sign(v);
+    };
+    const Sign along = sign(number(across[0]) * xi[0] + number(across[1]) * xi[1] + number(across[2]) * xi[2]);
+    const Sign farther = sign(-(F(rc[0]) * xi[0] + F(rc[1]) * xi[1] + F(rc[2]) * xi[2] + F(rc[3]) * xi[3]));
+    return along * farther;
+  }
+};
+
 inline const Filtered_predicate<Classify_trisector_predicate> classify_trisector{};
+inline const Filtered_predicate<Face_side_predicate> face_side{};
 inline const Filtered_predicate<Order_around_edge_predicate> order_around_edge{};
 inline const Filtered_predicate<Curve_point_conflict_predicate> curve_point_conflict{};
 inline const Filtered_predicate<Compare_along_trisector_predicate> compare_along_trisector{};

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "topology/face_boundaries.h"
+#include "topology/face_nesting.h"
 #include "topology/trisector_edges.h"
 #include "topology/vertex_fan.h"
 
@@ -39,17 +40,29 @@ Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, co
 
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology) {
   const Diagram& diagram = topology.vertices;
-  // Faces: one per pair whose boundary is one component. Several components of one pair are faces with
-  // holes, or several faces: deciding which needs their nesting, not done in this version.
+  // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
+  // (face_nesting.h). Faces are sorted by pair, then by their boundary.
   const std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges);
-  for (std::size_t i = 0; i < components.size(); ++i) {
-    const Boundary_component& c = components[i];
-    if ((i > 0 && components[i - 1].a == c.a && components[i - 1].b == c.b) ||
-        (i + 1 < components.size() && components[i + 1].a == c.a && components[i + 1].b == c.b))
-      throw std::logic_error("sites " + std::to_string(c.a) + " and " + std::to_string(c.b) +
-                             " share several boundary components: their nesting is not decided in this version");
-    topology.faces.push_back({c.a, c.b, {c.edges}, c.closed});
+  for (std::size_t i = 0; i < components.size();) {
+    std::size_t end = i;
+    std::vector<const Boundary_component*> of_pair;
+    while (end < components.size() && components[end].a == components[i].a && components[end].b == components[i].b)
+      of_pair.push_back(&components[end++]);
+    if (of_pair.size() == 1 && !of_pair.front()->closed) {
+      topology.faces.push_back({components[i].a, components[i].b, {components[i].edges}, false});
+    } else {
+      const Face_grouping grouping = group_components(sites, diagram, topology.edges, of_pair);
+      for (std::size_t f = 0; f < grouping.faces.size(); ++f) {
+        Diagram_face face{components[i].a, components[i].b, {}, grouping.bounded[f]};
+        for (std::size_t c : grouping.faces[f]) face.boundary.push_back(of_pair[c]->edges);
+        topology.faces.push_back(std::move(face));
+      }
+    }
+    i = end;
   }
+  std::sort(topology.faces.begin(), topology.faces.end(), [](const Diagram_face& x, const Diagram_face& y) {
+    return std::tie(x.a, x.b, x.boundary) < std::tie(y.a, y.b, y.boundary);
+  });
   std::vector<bool> hidden(sites.size(), false);
   for (const Hidden_site& h : diagram.hidden) hidden[h.site] = true;
   std::vector<Diagram_cell> cells(sites.size());

@@ -15,9 +15,8 @@ struct Topology_options {
 // are the next steps (docs/design.md, "The whole diagram").
 Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
 
-// The faces and cells from the edges, for inputs whose pairs have one boundary component each; throws
-// std::logic_error for what it does not decide yet (several components of one pair, degenerate vertices
-// where one pair's faces meet more than two edges).
+// The faces and cells from the edges. Throws std::logic_error for what it does not decide yet: degenerate
+// vertices where one pair's faces meet more than two edges, degenerate edges with no vertex.
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology);
 
 }  // namespace apollonius

@@ -12,6 +12,7 @@
 #include "reference/brute_force_edges.h"
 #include "reference/site_generators.h"
 #include "topology/build_topology.h"
+#include "topology/euler_characteristic.h"
 
 using namespace apollonius;
 
@@ -37,7 +38,7 @@ std::uint64_t seeds_per_family() {
 }  // namespace
 
 TEST_CASE("edges equal the brute-force reference on every family") {
-  std::size_t inputs = 0, edges = 0, vertex_free = 0;
+  std::size_t inputs = 0, edges = 0, vertex_free = 0, with_faces = 0;
   for (const std::string& name : site_family_names()) {
     for (std::uint64_t seed = 1; seed <= seeds_per_family(); ++seed) {
       const std::size_t n = 5 + seed % 12;
@@ -47,7 +48,7 @@ TEST_CASE("edges equal the brute-force reference on every family") {
       const std::vector<Site> sites = generate_sites(site_family_from_name(name), n, seed);
       const Diagram diagram = brute_force_diagram(sites);
       const std::vector<Diagram_edge> expected = brute_force_edges(sites, diagram);
-      const Diagram_topology t = build_edges(sites, diagram);
+      Diagram_topology t = build_edges(sites, diagram);
       std::vector<Diagram_edge> with_vertex;
       for (const Diagram_edge& e : expected)
         if (e.start || e.end) with_vertex.push_back(e);
@@ -68,11 +69,22 @@ TEST_CASE("edges equal the brute-force reference on every family") {
           FAIL_CHECK("only the reference: " << describe(reference[j++]));
       }
       CHECK(t.edges.size() == reference.size());
+      // Faces and the Euler relation, where every edge has a vertex (the others are the next step).
+      if (reference.size() == expected.size()) {
+        try {
+          add_faces_and_cells(sites, t);
+          CHECK(euler_defect(t) == 0);
+          ++with_faces;
+        } catch (const std::logic_error& e) {
+          FAIL_CHECK("faces: " << std::string(e.what()));
+        }
+      }
       ++inputs;
       edges += reference.size();
     }
   }
   MESSAGE(inputs << " inputs, " << edges << " edges with a vertex, all equal; " << vertex_free
-                 << " vertex-free edges in the reference, not yet found by the topology layer");
+                 << " vertex-free edges in the reference, not yet found by the topology layer; the Euler relation on "
+                 << with_faces << " inputs");
   CHECK(edges > 10 * inputs);
 }

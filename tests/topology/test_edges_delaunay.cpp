@@ -20,6 +20,7 @@
 #include "reference/brute_force_diagram.h"
 #include "reference/site_generators.h"
 #include "topology/build_topology.h"
+#include "topology/euler_characteristic.h"
 
 using namespace apollonius;
 
@@ -80,6 +81,46 @@ std::multiset<Edge_key> delaunay_edges(const std::vector<Site>& sites) {
   return {edges.begin(), edges.end()};
 }
 
+// The faces: the Delaunay edges whose dual is 2-dimensional (a diagonal of cospherical sites has a point or
+// a segment: its circumcentres and the rays to infinity around it lie on one line), unbounded exactly when
+// the edge is on the convex hull.
+std::map<std::pair<Site_index, Site_index>, bool> delaunay_faces(const std::vector<Site>& sites) {
+  std::vector<std::pair<Kernel::Point_3, Site_index>> points;
+  for (Site_index i = 0; i < sites.size(); ++i) points.push_back({{sites[i].x, sites[i].y, sites[i].z}, i});
+  const Triangulation dt(points.begin(), points.end());
+  std::map<std::pair<Site_index, Site_index>, bool> faces;  // pair -> bounded
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    Site_index u = e->first->vertex(e->second)->info(), v = e->first->vertex(e->third)->info();
+    if (v < u) std::swap(u, v);
+    std::vector<Kernel::Point_3> centres;
+    std::vector<Kernel::Vector_3> rays;  // outward normals of the hull facets at the edge
+    auto cell = dt.incident_cells(*e), done = cell;
+    do {
+      if (dt.is_infinite(cell)) {
+        const int inf = cell->index(dt.infinite_vertex());
+        std::array<Kernel::Point_3, 3> p;
+        for (int k = 0, t = 0; k < 4; ++k)
+          if (k != inf) p[t++] = cell->vertex(k)->point();
+        // The infinite cell's finite facet is oriented so that the infinite vertex is on its positive side.
+        Kernel::Vector_3 normal = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
+        if (inf % 2 == 1) normal = -normal;
+        rays.push_back(normal);
+      } else if (std::find(centres.begin(), centres.end(), cell->circumcenter()) == centres.end()) {
+        centres.push_back(cell->circumcenter());
+      }
+    } while (++cell != done);
+    bool plane = false;  // the dual spans two dimensions
+    for (std::size_t i = 2; i < centres.size() && !plane; ++i)
+      plane = !CGAL::collinear(centres[0], centres[1], centres[i]);
+    if (!plane && centres.size() >= 2)
+      for (const auto& r : rays) plane = plane || CGAL::cross_product(r, centres[1] - centres[0]) != CGAL::NULL_VECTOR;
+    if (!plane && centres.size() == 1)
+      for (std::size_t i = 1; i < rays.size(); ++i) plane = plane || CGAL::cross_product(rays[0], rays[i]) != CGAL::NULL_VECTOR;
+    if (plane) faces[{u, v}] = rays.empty();
+  }
+  return faces;
+}
+
 std::multiset<Edge_key> our_edges(const Diagram_topology& t) {
   std::multiset<Edge_key> edges;
   const auto tie = [&](const std::optional<std::size_t>& v) { return v ? t.vertices.vertices[*v].tie_set : Tie{}; };
@@ -100,7 +141,16 @@ std::string describe(const Edge_key& k) {
 // The brute force decides the vertices of the small degenerate inputs: the octree does not yet finish on some
 // of them (the open issue on many sites tangent to one sphere).
 void check_against_delaunay(const std::vector<Site>& sites, bool brute = false) {
-  const Diagram_topology t = build_edges(sites, brute ? brute_force_diagram(sites) : octree_diagram(sites));
+  Diagram_topology t = build_edges(sites, brute ? brute_force_diagram(sites) : octree_diagram(sites));
+  add_faces_and_cells(sites, t);
+  CHECK(euler_defect(t) == 0);
+  std::map<std::pair<Site_index, Site_index>, bool> faces;
+  for (const Diagram_face& f : t.faces) {
+    CHECK(f.boundary.size() == 1);  // Voronoi faces are convex: no holes
+    CHECK(faces.count({f.a, f.b}) == 0);
+    faces[{f.a, f.b}] = f.bounded;
+  }
+  CHECK(faces == delaunay_faces(sites));
   for (const Diagram_edge& e : t.edges) CHECK(e.curve == Curve_shape::line);
   const std::multiset<Edge_key> ours = our_edges(t), theirs = delaunay_edges(sites);
   std::vector<Edge_key> only_ours, only_theirs;

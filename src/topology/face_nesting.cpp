@@ -1,0 +1,190 @@
+#include "topology/face_nesting.h"
+
+#include <algorithm>
+#include <deque>
+#include <numeric>
+#include <stdexcept>
+
+#include "predicates/rational_between.h"
+#include "predicates/trisector_predicates.h"
+
+namespace apollonius {
+namespace {
+
+using Vector3 = std::array<Rational, 3>;
+
+Vector3 cross(const Vector3& x, const Vector3& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+
+bool is_zero(const Vector3& x) {
+  return certain_sign(x[0]) == Sign::ZERO && certain_sign(x[1]) == Sign::ZERO && certain_sign(x[2]) == Sign::ZERO;
+}
+
+// One edge of the pair, with its curve.
+struct Pair_edge {
+  std::size_t component;
+  const Diagram_edge* edge;
+  std::unique_ptr<Trisector> trisector;
+  Trisector_kind kind;
+};
+
+// The hyperplane e . v = y in a trisector's frame X = 2 (v - p_o, .): (e / 2) . X = y - e . p_o.
+Vector4<Rational> level_cut(const Vector3& e) { return {e[0] / 2, e[1] / 2, e[2] / 2, Rational(0)}; }
+Rational level_offset(const Vector3& e, const Site& o, const Rational& y) {
+  return y - (e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z));
+}
+
+// e . v at a point of the trisector, exactly.
+template <class P>
+Root_number<Rational> coordinate(const Trisector& t, const P& p, const Vector3& e) {
+  const Site& o = t.origin();
+  return euclidean_value(field_point_on<Rational>(t, p), level_cut(e), e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z));
+}
+
+// Whether the point lies strictly inside the edge, forward from its start to its end.
+bool on_edge(const Pair_edge& pe, const Curve_point& p, const Diagram& diagram) {
+  const Diagram_edge& e = *pe.edge;
+  const Trisector& t = *pe.trisector;
+  if (e.closed) return true;
+  const auto order = [&](std::size_t v) { return compare_along_trisector(t, diagram.vertices[v].vertex, p); };
+  if (pe.kind != Trisector_kind::ellipse)
+    return (!e.start || order(*e.start) == Sign::NEGATIVE) && (!e.end || order(*e.end) == Sign::POSITIVE);
+  const Sign after_start = order(*e.start), before_end = -order(*e.end);
+  if (after_start == Sign::ZERO || before_end == Sign::ZERO) return false;
+  const Sign start_to_end = *e.start == *e.end ? Sign::ZERO
+                            : compare_along_trisector(t, diagram.vertices[*e.start].vertex, diagram.vertices[*e.end].vertex);
+  if (start_to_end == Sign::NEGATIVE) return after_start == Sign::NEGATIVE && before_end == Sign::NEGATIVE;
+  return after_start == Sign::NEGATIVE || before_end == Sign::NEGATIVE;  // wraps (or a loop at one vertex)
+}
+
+// Disjoint sets of components.
+struct Union_find {
+  std::vector<std::size_t> parent;
+  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
+  std::size_t find(std::size_t x) { return parent[x] == x ? x : parent[x] = find(parent[x]); }
+  void join(std::size_t x, std::size_t y) { parent[find(x)] = find(y); }
+};
+
+}  // namespace
+
+Face_grouping group_components(const std::vector<Site>& sites, const Diagram& diagram,
+                               const std::vector<Diagram_edge>& edges,
+                               const std::vector<const Boundary_component*>& components) {
+  const Site_index a = components.front()->a, b = components.front()->b;
+  std::vector<Pair_edge> pair_edges;
+  for (std::size_t c = 0; c < components.size(); ++c)
+    for (std::size_t id : components[c]->edges) {
+      const Diagram_edge& e = edges[id];
+      const std::array<Site_index, 3> triple{e.tie_set[0], e.tie_set[1], e.tie_set[2]};
+      auto t = std::make_unique<Trisector>(triple, std::array<Site, 3>{sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+      const Trisector_kind kind = classify_trisector(*t).first;
+      pair_edges.push_back({c, &e, std::move(t), kind});
+    }
+
+  // A direction e across the pair (orthogonal to p_b - p_a) whose level planes contain no edge's plane, and
+  // the direction d along the levels on the sheet.
+  const Vector3 n{Rational(sites[b].x) - Rational(sites[a].x), Rational(sites[b].y) - Rational(sites[a].y),
+                  Rational(sites[b].z) - Rational(sites[a].z)};
+  Vector3 e{}, d{};
+  bool found = false;
+  // Each edge's plane rules out at most one direction e across the pair (its normal), and the axes
+  // (1, j, j^2) give pairwise independent directions: some j among the first 2 k + 4 works.
+  for (std::size_t j = 0; j < 2 * pair_edges.size() + 4 && !found; ++j) {
+    const Vector3 axis{Rational(1), Rational(static_cast<long>(j)), Rational(static_cast<long>(j * j))};
+    e = cross(n, axis);
+    if (is_zero(e)) continue;
+    found = std::none_of(pair_edges.begin(), pair_edges.end(),
+                         [&](const Pair_edge& pe) { return parallel_to_plane(*pe.trisector, level_cut(e)); });
+  }
+  if (!found) throw std::logic_error("face nesting: no level direction crosses every edge of the pair");
+  d = cross(n, e);
+
+  // Critical heights: the vertices' and the extreme points'.
+  std::vector<Root_number<Rational>> heights;
+  for (const Pair_edge& pe : pair_edges) {
+    const Trisector& t = *pe.trisector;
+    for (const std::optional<std::size_t>& v : {pe.edge->start, pe.edge->end})
+      if (v) heights.push_back(coordinate(t, diagram.vertices[*v].vertex, e));
+    // Where e . tau0 = <X, (e . e2) e1 - (e . e1) e2> = 0, tau0 the tangent (trisector_predicates.h).
+    const Trisector_geometry<Rational>& g = t.geometry<Rational>();
+    const Rational along1 = e[0] * g.e1[0] + e[1] * g.e1[1] + e[2] * g.e1[2];
+    const Rational along2 = e[0] * g.e2[0] + e[1] * g.e2[1] + e[2] * g.e2[2];
+    const Vector4<Rational> y = combination(along2, g.e1, Rational(-along1), g.e2);
+    for (const Curve_point& p : curve_points(t, {y[0], y[1], y[2], -y[3]}, Rational(0)))
+      if (on_sheet(p) && on_edge(pe, p, diagram)) heights.push_back(coordinate(t, p, e));
+  }
+  std::sort(heights.begin(), heights.end(),
+            [](const auto& x, const auto& y) { return compare(x, y) == Sign::NEGATIVE; });
+  heights.erase(std::unique(heights.begin(), heights.end(), [](const auto& x, const auto& y) { return compare(x, y) == Sign::ZERO; }),
+                heights.end());
+  std::vector<Rational> levels;
+  const auto shifted = [](const Root_number<Rational>& x, int k) {
+    return Root_number<Rational>{x.a + Rational(k) * x.denominator, x.b, x.d, x.denominator};
+  };
+  if (heights.empty()) {
+    levels.push_back(0);
+  } else {
+    levels.push_back(rational_between(shifted(heights.front(), -1), heights.front()));
+    for (std::size_t i = 0; i + 1 < heights.size(); ++i) levels.push_back(rational_between(heights[i], heights[i + 1]));
+    levels.push_back(rational_between(heights.back(), shifted(heights.back(), 1)));
+  }
+
+  Union_find sets(components.size());
+  std::vector<bool> unbounded(components.size(), false), crossed(components.size(), false);
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    struct Crossing {
+      Root_number<Rational> abscissa;
+      std::size_t edge;
+      Curve_point point;
+    };
+    std::vector<Crossing> crossings;
+    for (std::size_t i = 0; i < pair_edges.size(); ++i) {
+      const Trisector& t = *pair_edges[i].trisector;
+      for (const Curve_point& p : curve_points(t, level_cut(e), level_offset(e, t.origin(), levels[l])))
+        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({coordinate(t, p, d), i, p});
+    }
+    if (crossings.empty()) continue;
+    std::sort(crossings.begin(), crossings.end(),
+              [](const Crossing& x, const Crossing& y) { return compare(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
+    // The face at the first crossing: on its +d side or before it; then it alternates.
+    const Pair_edge& first = pair_edges[crossings.front().edge];
+    Site_index third = a;
+    for (Site_index s : first.edge->tie_set)
+      if (s != a && s != b) third = s;
+    const bool after_first = face_side(crossings.front().point, sites[a], sites[b], sites[third], e, d) == Sign::POSITIVE;
+    const bool outermost = l == 0 || l + 1 == levels.size();
+    bool inside = !after_first;  // before the first crossing
+    std::optional<std::size_t> left;  // the component at the interval's left end
+    for (std::size_t k = 0; k <= crossings.size(); ++k) {
+      const std::optional<std::size_t> right =
+          k < crossings.size() ? std::optional<std::size_t>(pair_edges[crossings[k].edge].component) : std::nullopt;
+      if (right) crossed[*right] = true;
+      if (inside) {
+        if (left && right) sets.join(*left, *right);
+        for (const std::optional<std::size_t>& end : {left, right})
+          if (end && (!left || !right || outermost)) unbounded[*end] = true;
+      }
+      left = right;
+      inside = !inside;
+    }
+  }
+  for (std::size_t c = 0; c < components.size(); ++c)
+    if (!crossed[c]) throw std::logic_error("face nesting: a boundary component no level line crosses");
+
+  Face_grouping grouping;
+  std::vector<std::size_t> face_of(components.size(), static_cast<std::size_t>(-1));
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const std::size_t root = sets.find(c);
+    if (face_of[root] == static_cast<std::size_t>(-1)) {
+      face_of[root] = grouping.faces.size();
+      grouping.faces.emplace_back();
+      grouping.bounded.push_back(true);
+    }
+    grouping.faces[face_of[root]].push_back(c);
+    if (unbounded[c] || !components[c]->closed) grouping.bounded[face_of[root]] = false;
+  }
+  return grouping;
+}
+
+}  // namespace apollonius
