@@ -91,14 +91,23 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
   else
     keep_undominated(box, first, end);
   const std::size_t kept = stack_.size() - end;
+  const auto record = [&] {
+    if (regions_ == nullptr || kept < 2) return;
+    std::vector<Site_index> sites(stack_.begin() + static_cast<std::ptrdiff_t>(end), stack_.end());
+    std::sort(sites.begin(), sites.end());
+    regions_->push_back({box, std::move(sites)});
+  };
+  if (kept < 4) record();
   if (kept >= 4) {
     stagnant = kept == end - first ? stagnant + 1 : 0;
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
                          (stagnant >= kStagnationLevels && kept <= kStagnantCandidates &&
                           tiny_against_candidates(box, end));
     const Children children = settled ? Children{} : split(box);
-    if (children.count == 0)
+    if (children.count == 0) {
+      record();
       decide_leaf(box, end, out);
+    }
     else
       for (int c = 0; c < children.count; ++c) refine(children.box[c], end, depth + 1, stagnant, out);
   }

@@ -19,6 +19,7 @@
 #include "predicates/axis_box.h"
 #include "predicates/centre_expansion.h"
 #include "octree/leaf_decision.h"
+#include "octree/octree_diagram.h"
 #include "octree/quadruple_cache.h"
 
 namespace apollonius {
@@ -41,6 +42,9 @@ class Box_refinement {
 
   Refinement_counts counts() const;
 
+  // Records every box that ends refinement with 2 or more candidates, with them (octree_diagram.h).
+  void record_regions(std::vector<Octree_regions::Box>* regions) { regions_ = regions; }
+
  private:
   // Refines the box whose candidates are stack_[first, stack_.size()).
   void refine(const Axis_box& box, std::size_t first, int depth, int stagnant, std::vector<Found_vertex>& out);
@@ -56,6 +60,7 @@ class Box_refinement {
   std::vector<Site_index> tie_;
   Quadruple_cache<Kernel> cache_;
   Refinement_counts counts_;
+  std::vector<Octree_regions::Box>* regions_ = nullptr;
 };
 
 }  // namespace apollonius

@@ -71,10 +71,14 @@ class Far_field {
         remove_beaten(directions, sites_[*w], kept);
       }
     }
-    if (kept.size() <= 3) return;
+    if (kept.size() <= 3) {
+      if (kept.size() >= 2) patch_sites_.push_back(kept);
+      return;
+    }
     const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
+      patch_sites_.push_back(kept);
       record_quadruples(kept);
       return;
     }
@@ -86,6 +90,7 @@ class Far_field {
   }
 
   std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
+  std::vector<std::vector<Site_index>> take_patch_sites() { return std::move(patch_sites_); }
 
  private:
   // The patch's directions y = (side, s, t) in face coordinates, and tau in [0, |y| / R] (far_field.h).
@@ -162,6 +167,7 @@ class Far_field {
   std::array<double, 3> origin_;
   double radius_;
   std::vector<Quadruple_key> quadruples_;
+  std::vector<std::vector<Site_index>> patch_sites_;
 };
 
 }  // namespace
@@ -169,15 +175,26 @@ class Far_field {
 template <class Kernel>
 Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                        const std::array<double, 3>& origin, double radius, const Axis_box& root) {
-  if (escaping.size() < 4) return {};
+  if (escaping.size() < 4) {
+    Far_field_vertices none;
+    if (escaping.size() >= 2) none.patch_sites.push_back(escaping);
+    return none;
+  }
   // The six faces of the direction cube are refined independently; neighbouring patches share most of
   // their quadruples, so those are collected first and each is decided once.
   std::vector<std::vector<Quadruple_key>> by_face(6);
+  std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
   tbb::parallel_for(0, 6, [&](int face) {
     Far_field<Kernel> field(sites, origin, radius);
     field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, escaping);
     by_face[face] = field.take_quadruples();
+    sites_by_face[face] = field.take_patch_sites();
   });
+  std::vector<std::vector<Site_index>> patch_sites;
+  for (auto& face : sites_by_face)
+    for (auto& kept : face) patch_sites.push_back(std::move(kept));
+  std::sort(patch_sites.begin(), patch_sites.end());
+  patch_sites.erase(std::unique(patch_sites.begin(), patch_sites.end()), patch_sites.end());
   std::vector<Quadruple_key> quadruples;
   for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
   std::sort(quadruples.begin(), quadruples.end());
@@ -205,7 +222,7 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
     for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
     i = end;
   }
-  return {std::move(unique), quadruples.size()};
+  return {std::move(unique), quadruples.size(), std::move(patch_sites)};
 }
 
 template Far_field_vertices far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,

@@ -25,6 +25,9 @@ namespace apollonius {
 struct Far_field_vertices {
   std::vector<Found_vertex> vertices;
   std::size_t quadruples = 0;  // distinct quadruples decided exactly
+  // The sites kept on each patch where refinement ended, 2 or more, ascending and each set once: every
+  // point outside R lies in some patch's cone, and its owners are among that patch's sites.
+  std::vector<std::vector<Site_index>> patch_sites;
 };
 
 // Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping`

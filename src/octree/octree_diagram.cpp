@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 
 #include "octree/box_refinement.h"
 #include "octree/candidate_propagation.h"
@@ -35,13 +37,35 @@ class Lap_timer {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// The regions in input units: boxes scaled back by 2^exponent, exactly (powers of two) unless a bound
+// leaves the double range, which the whole diagram does not handle.
+void unscale_regions(Octree_regions& regions, int exponent) {
+  const auto unscale = [&](Axis_box& b) {
+    for (int a = 0; a < 3; ++a) {
+      b.lo[a] = std::ldexp(b.lo[a], exponent);
+      b.hi[a] = std::ldexp(b.hi[a], exponent);
+      if (!std::isfinite(b.lo[a]) || !std::isfinite(b.hi[a]))
+        throw std::overflow_error("the octree's regions leave the double range in input units");
+    }
+  };
+  unscale(regions.root);
+  for (Octree_regions::Box& b : regions.boxes) unscale(b.box);
+}
+
 template <class Kernel>
 Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_options& options) {
   Octree_statistics statistics;
   Lap_timer timer;
   std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites);
   const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
-  if (active.size() < 4) return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {});
+  if (active.size() < 4) {
+    if (options.regions != nullptr) {  // no box: every site escapes, and they are one set
+      *options.regions = {};
+      options.regions->escaping = active;
+      if (active.size() >= 2) options.regions->far_sets.push_back(active);
+    }
+    return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {});
+  }
   const int exponent = normalizing_exponent(input_sites, active);
   const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
   const std::vector<Site>& sites = exponent == 0 ? input_sites : normalized;
@@ -76,9 +100,25 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
 
     found.resize(seeds.size());
     tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box());
+    tbb::enumerable_thread_specific<std::vector<Octree_regions::Box>> regions;
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
-      refinement.local().find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+      Box_refinement<Kernel>& local = refinement.local();
+      if (options.regions != nullptr) local.record_regions(&regions.local());
+      local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
     });
+    if (options.regions != nullptr) {
+      Octree_regions& r = *options.regions;
+      r = {};
+      r.root = partition.root_box();
+      for (std::size_t id = 0; id < partition.id_count(); ++id)
+        if (partition.is_box(id) && candidates[id].size() >= 2 && candidates[id].size() < 4)
+          r.boxes.push_back({partition.box(id), candidates[id]});
+      for (auto& list : regions)
+        for (Octree_regions::Box& b : list) r.boxes.push_back(std::move(b));
+      // The boxes are disjoint: their lower corners order them, whatever the threads did.
+      std::sort(r.boxes.begin(), r.boxes.end(),
+                [](const Octree_regions::Box& x, const Octree_regions::Box& y) { return x.box.lo < y.box.lo; });
+    }
     for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();
       statistics.boxes += counts.boxes;
@@ -90,6 +130,10 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.refinement_seconds = timer.lap();
     Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
     vertices = std::move(far.vertices);
+    if (options.regions != nullptr) {
+      options.regions->escaping = escaping;
+      options.regions->far_sets = std::move(far.patch_sites);
+    }
     statistics.far_field_quadruples = far.quadruples;
     statistics.far_field_seconds = timer.lap();
   });
@@ -100,8 +144,10 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     std::move(f.begin(), f.end(), std::back_inserter(vertices));
     std::vector<Found_vertex>().swap(f);  // freed now: the vertices are large, and peak memory is reported
   }
-  if (exponent != 0)
+  if (exponent != 0) {
     for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
+    if (options.regions != nullptr) unscale_regions(*options.regions, exponent);
+  }
   Diagram diagram = assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices));
   statistics.assembly_seconds = timer.lap();
   if (options.statistics) *options.statistics = statistics;

@@ -38,10 +38,26 @@ struct Octree_statistics {
 // and no exact stage (kernels.h), for crosscheck and to measure what exactness costs.
 enum class Arithmetic { certified, floating };
 
+// The regions the octree settled and the sites that may own their points: where the whole diagram looks
+// for the curves and sheets with no vertex (topology/vertex_free.h). Every point of the root box R lies in
+// some box, whose sites include its owners (the completeness argument above); every point outside R is
+// owned by escaping sites.
+struct Octree_regions {
+  struct Box {
+    Axis_box box;
+    std::vector<Site_index> sites;  // ascending, 2 or more
+  };
+  std::vector<Box> boxes;  // the boxes with 2 or more sites, tiling R with those of 0 or 1
+  Axis_box root;
+  std::vector<Site_index> escaping;               // ascending
+  std::vector<std::vector<Site_index>> far_sets;  // the far field's patches' sites (far_field.h), 2 or more
+};
+
 struct Octree_options {
   int threads = 1;
   Octree_statistics* statistics = nullptr;  // filled in when not null
   Arithmetic arithmetic = Arithmetic::certified;
+  Octree_regions* regions = nullptr;  // filled in when not null
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

@@ -10,6 +10,7 @@
 #include "topology/face_boundaries.h"
 #include "topology/face_nesting.h"
 #include "topology/trisector_edges.h"
+#include "topology/vertex_free.h"
 #include "topology/vertex_fan.h"
 
 namespace apollonius {
@@ -38,8 +39,30 @@ Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, co
   return topology;
 }
 
-void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology) {
+Octree_regions regions_for_every_site(const Diagram& diagram) {
+  Octree_regions regions;
+  std::vector<bool> hidden(diagram.site_count, false);
+  for (const Hidden_site& h : diagram.hidden) hidden[h.site] = true;
+  for (Site_index s = 0; s < diagram.site_count; ++s)
+    if (!hidden[s]) regions.escaping.push_back(s);
+  if (regions.escaping.size() >= 2) regions.far_sets.push_back(regions.escaping);
+  return regions;
+}
+
+Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram, const Octree_regions& regions,
+                                const Topology_options& options) {
+  Diagram_topology topology = build_edges(sites, std::move(diagram), options);
+  Vertex_free_parts parts = vertex_free_parts(sites, topology.vertices, topology.edges, regions);
+  for (Diagram_edge& e : parts.edges) topology.edges.push_back(std::move(e));
+  std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
+  add_faces_and_cells(sites, topology, parts.sheets);
+  return topology;
+}
+
+void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
+                         const std::vector<std::pair<Site_index, Site_index>>& whole_sheets) {
   const Diagram& diagram = topology.vertices;
+  for (const auto& [a, b] : whole_sheets) topology.faces.push_back({a, b, {}, false});
   // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
   // (face_nesting.h). Faces are sorted by pair, then by their boundary.
   const std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges);

@@ -2,6 +2,9 @@
 // along their curves, then the faces they bound and the cells.
 #pragma once
 
+#include <utility>
+
+#include "octree/octree_diagram.h"
 #include "topology/topology.h"
 
 namespace apollonius {
@@ -10,13 +13,21 @@ struct Topology_options {
   int threads = 1;
 };
 
-// The edges that have a vertex, from the complete vertex diagram of `sites` (octree_diagram or
-// brute_force_diagram). Faces and cells are left empty: the edges with no vertex and the faces' nesting
-// are the next steps (docs/design.md, "The whole diagram").
-Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
-
-// The faces and cells from the edges. Throws std::logic_error for what it does not decide yet: degenerate
+// The whole diagram of `sites` from its complete vertex diagram and the regions of the same octree run
+// (octree_diagram with Octree_options::regions), or from brute_force_diagram and
+// regions_for_every_site. Throws std::logic_error for what this version does not decide: degenerate
 // vertices where one pair's faces meet more than two edges, degenerate edges with no vertex.
-void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology);
+Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram, const Octree_regions& regions,
+                                const Topology_options& options = {});
+
+// Regions that make every active site a candidate of everything (no box; one far set): O(n^3) candidate
+// triples, for small inputs and references.
+Octree_regions regions_for_every_site(const Diagram& diagram);
+
+// The steps of build_topology, for tests: the edges that have a vertex (faces and cells left empty), and
+// the faces and cells from all the edges and the whole-sheet faces.
+Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
+void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
+                         const std::vector<std::pair<Site_index, Site_index>>& whole_sheets = {});
 
 }  // namespace apollonius

@@ -1,0 +1,142 @@
+#include "topology/vertex_free.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "predicates/arc_witness.h"
+#include "predicates/curve_point_in_box.h"
+#include "predicates/sheet_point.h"
+#include "predicates/trisector_predicates.h"
+
+namespace apollonius {
+namespace {
+
+using Triple = std::array<Site_index, 3>;
+using Pair = std::pair<Site_index, Site_index>;
+
+// For each site, the ids (ascending) of the items whose site sets hold it.
+template <class Sets>
+std::vector<std::vector<std::size_t>> by_site(std::size_t site_count, const Sets& sets) {
+  std::vector<std::vector<std::size_t>> lists(site_count);
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    for (Site_index s : sets[i]) lists[s].push_back(i);
+  return lists;
+}
+
+bool share(const std::vector<std::size_t>& x, const std::vector<std::size_t>& y) {
+  for (std::size_t i = 0, j = 0; i < x.size() && j < y.size();) {
+    if (x[i] == y[j]) return true;
+    x[i] < y[j] ? ++i : ++j;
+  }
+  return false;
+}
+
+bool share(const std::vector<std::size_t>& x, const std::vector<std::size_t>& y, const std::vector<std::size_t>& z) {
+  std::vector<std::size_t> xy;
+  std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(xy));
+  return share(xy, z);
+}
+
+// Where the candidates were seen: the boxes (positions in regions.boxes); far: in a far field patch.
+struct Occurrences {
+  std::vector<std::size_t> boxes;
+  bool far = false;
+};
+
+// The owners' test at a witness against `sites_to_test`: nothing when a site is closer, else the tie set.
+template <class Conflict>
+std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& base, const std::vector<Site_index>& sites_to_test,
+                                              Conflict conflict) {
+  std::vector<Site_index> tie = base;
+  for (Site_index s : sites_to_test) {
+    if (std::find(base.begin(), base.end(), s) != base.end()) continue;
+    const Sign c = conflict(s);
+    if (c == Sign::NEGATIVE) return std::nullopt;
+    if (c == Sign::ZERO) tie.push_back(s);
+  }
+  std::sort(tie.begin(), tie.end());
+  return tie;
+}
+
+}  // namespace
+
+Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
+                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions) {
+  std::vector<std::vector<Site_index>> vertex_sets, edge_sets;
+  for (const Diagram_vertex& v : diagram.vertices) vertex_sets.push_back(v.tie_set);
+  for (const Diagram_edge& e : edges) edge_sets.push_back(e.tie_set);
+  const auto vertices_of_site = by_site(sites.size(), vertex_sets);
+
+  // Candidate triples and pairs, where each was seen.
+  std::map<Triple, Occurrences> triples;
+  std::map<Pair, Occurrences> pairs;
+  const auto note = [&](const std::vector<Site_index>& set, std::optional<std::size_t> box) {
+    for (std::size_t i = 0; i < set.size(); ++i)
+      for (std::size_t j = i + 1; j < set.size(); ++j) {
+        Occurrences& p = pairs[{set[i], set[j]}];
+        box ? p.boxes.push_back(*box) : void(p.far = true);
+        for (std::size_t k = j + 1; k < set.size(); ++k) {
+          const Triple t{set[i], set[j], set[k]};
+          if (share(vertices_of_site[t[0]], vertices_of_site[t[1]], vertices_of_site[t[2]])) continue;
+          Occurrences& o = triples[t];
+          box ? o.boxes.push_back(*box) : void(o.far = true);
+        }
+      }
+  };
+  for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
+  for (const std::vector<Site_index>& set : regions.far_sets) note(set, std::nullopt);
+
+  const auto in_root = [&](const Curve_point& w) {
+    return regions.boxes.size() > 0 && curve_point_in_box(w, regions.root);
+  };
+  Vertex_free_parts parts;
+  for (const auto& [triple, seen] : triples) {
+    const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+    const auto [kind, shape] = classify_trisector(t);
+    if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola) continue;
+    const Curve_point w = arc_witness(t, std::nullopt, std::nullopt);
+    const std::vector<Site_index>* test = nullptr;
+    if (in_root(w)) {
+      for (std::size_t b : seen.boxes)
+        if (curve_point_in_box(w, regions.boxes[b].box)) {
+          test = &regions.boxes[b].sites;
+          break;
+        }
+    } else if (seen.far) {
+      test = &regions.escaping;
+    }
+    if (test == nullptr) continue;  // W's region has not all three: the curve is no edge
+    const std::optional<std::vector<Site_index>> tie = tie_at({triple.begin(), triple.end()}, *test, [&](Site_index s) {
+      return curve_point_conflict(w, sites[s]);
+    });
+    if (!tie || !std::equal(triple.begin(), triple.end(), tie->begin())) continue;  // not in it, or not its smallest triple
+    Diagram_edge e;
+    e.tie_set = *tie;
+    e.curve = shape;
+    e.closed = kind == Trisector_kind::ellipse;
+    parts.edges.push_back(std::move(e));
+    edge_sets.push_back(*tie);
+  }
+
+  const auto edges_of_site = by_site(sites.size(), edge_sets);
+  for (const auto& [pair, seen] : pairs) {
+    if (share(edges_of_site[pair.first], edges_of_site[pair.second])) continue;
+    const Site &a = sites[pair.first], &b = sites[pair.second];
+    const std::vector<Site_index>* test = nullptr;
+    for (std::size_t box : seen.boxes)
+      if (axis_point_in_box(a, b, regions.boxes[box].box)) {
+        test = &regions.boxes[box].sites;
+        break;
+      }
+    if (test == nullptr && regions.boxes.empty() && seen.far) test = &regions.escaping;  // no octree box: all escape
+    if (test == nullptr) continue;
+    const std::optional<std::vector<Site_index>> tie = tie_at({pair.first, pair.second}, *test, [&](Site_index s) {
+      return axis_point_conflict(a, b, sites[s]);
+    });
+    if (tie && tie->size() == 2) parts.sheets.push_back(pair);
+  }
+  return parts;
+}
+
+}  // namespace apollonius

@@ -1,0 +1,33 @@
+// The parts of the diagram with no vertex (paper section 5.5: humps, and vertex-free cells): closed edges
+// (an ellipse or circle that no site cuts), edges infinite both ways, and faces that are a whole bisector
+// sheet. Exact, and complete in R^3 by the octree's regions (octree_diagram.h):
+//  - a trisector with no vertex of the diagram on it is in the diagram everywhere or nowhere (a tie with
+//    a fourth site that changes this is a vertex), so one point W of it decides: its canonical point
+//    (arc_witness). If the curve is an edge, W's owners are its tie set; W lies in a box of the octree
+//    whose sites include them, or outside the root box, where the escaping sites include them. So the
+//    candidates are the triples of the boxes' and the far field patches' site sets, and W is tested
+//    against the sites of a box that contains it, or against the escaping sites;
+//  - likewise a pair with no edge has a face only as a whole sheet, decided at the sheet's point on the
+//    segment between the two centres (sheet_point.h), which lies in the sites' bounding box, inside R.
+// Cost: O(k^3) candidate triples per box of k sites; each candidate with no vertex costs one exact witness.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "octree/octree_diagram.h"
+#include "topology/topology.h"
+
+namespace apollonius {
+
+struct Vertex_free_parts {
+  std::vector<Diagram_edge> edges;                           // closed, or infinite both ways
+  std::vector<std::pair<Site_index, Site_index>> sheets;     // faces that are a whole sheet, a < b
+};
+
+// `edges` are the edges with a vertex. `regions` from the same octree run as `diagram` (or, for a
+// reference, no box and every active site in one far set).
+Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
+                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions);
+
+}  // namespace apollonius
