@@ -5,6 +5,7 @@
 
 #include "cli/certify_command.h"
 #include "cli/crosscheck_command.h"
+#include "cli/diagram_command.h"
 #include "cli/generate_command.h"
 #include "cli/vertices_command.h"
 #include "io/atomic_file.h"
@@ -41,6 +42,7 @@ int run_cli(const std::vector<std::string>& arguments, std::ostream& out, std::o
   app.get_formatter()->column_width(30);
   const std::pair<const char*, Command_registration> registrations[] = {
       {"vertices", add_vertices_command},
+      {"diagram", add_diagram_command},
       {"certify", add_certify_command},
       {"crosscheck", add_crosscheck_command},
       {"generate", add_generate_command},
