@@ -8,7 +8,9 @@ namespace apollonius {
 namespace {
 
 // The line of L inside the cut, as X = base + s direction, and the quadratic A s^2 + 2 B s + C of
-// <X, X> along it. Empty when the cut is parallel to L.
+// <X, X> along it. With X = point + u e1 + v e2 the cut reads alpha u + beta v = rho; the line is
+// (u, v) = rho (alpha, beta) / (alpha^2 + beta^2) + s (-beta, alpha), one formula with no case, so that
+// the filter and the exact stage name the roots alike. Empty when the cut is parallel to L.
 template <class NT>
 struct Cut_line {
   Vector4<NT> base, direction;
@@ -17,18 +19,13 @@ struct Cut_line {
 
 template <class NT>
 std::optional<Cut_line<NT>> cut_line(const Trisector_geometry<NT>& g, const Vector4<NT>& cut, const NT& offset) {
-  const NT along1 = euclidean_product(cut, g.e1), along2 = euclidean_product(cut, g.e2);
-  const NT rest = offset - euclidean_product(cut, g.point);
+  const NT alpha = euclidean_product(cut, g.e1), beta = euclidean_product(cut, g.e2);
+  const NT norm = alpha * alpha + beta * beta;
+  if (certain_sign(norm) == Sign::ZERO) return std::nullopt;
+  const NT rho = (offset - euclidean_product(cut, g.point)) / norm;
   Cut_line<NT> line;
-  if (certain_sign(along2) != Sign::ZERO) {
-    line.base = combination(NT(1), g.point, rest / along2, g.e2);
-    line.direction = combination(NT(1), g.e1, -(along1 / along2), g.e2);
-  } else if (certain_sign(along1) != Sign::ZERO) {
-    line.base = combination(NT(1), g.point, rest / along1, g.e1);
-    line.direction = g.e2;
-  } else {
-    return std::nullopt;
-  }
+  line.base = combination(NT(1), g.point, NT(1), combination(rho * alpha, g.e1, rho * beta, g.e2));
+  line.direction = combination(-beta, g.e1, alpha, g.e2);
   line.A = lorentz_product(line.direction, line.direction);
   line.B = lorentz_product(line.base, line.direction);
   line.C = lorentz_product(line.base, line.base);
@@ -44,6 +41,14 @@ Vector4<NT> to_vector(const Vector4<Rational>& x) {
     for (int j = 0; j < 4; ++j) y[j] = Interval(CGAL::to_interval(x[j]));
     return y;
   }
+}
+
+template <class NT>
+NT to_number(const Rational& x) {
+  if constexpr (std::is_same_v<NT, Rational>)
+    return x;
+  else
+    return Interval(CGAL::to_interval(x));
 }
 
 }  // namespace
@@ -92,20 +97,74 @@ Field_point<Interval> Curve_point::coordinates<Interval>() const {
   return p;
 }
 
-std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset) {
-  std::vector<Curve_point> points;
-  const std::optional<Cut_line<Rational>> line = cut_line(trisector.geometry<Rational>(), cut, offset);
-  if (!line) return points;
-  const Sign a = certain_sign(line->A);
-  if (a == Sign::ZERO) {
-    if (certain_sign(line->B) != Sign::ZERO) points.emplace_back(trisector, cut, offset, Root::SINGLE);
-    return points;
+namespace {
+
+// Which roots the cut leaves: none, SINGLE, or MINUS and PLUS, in NT (Interval throws when unsure).
+template <class NT>
+std::vector<Root> roots_of_cut(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset) {
+  const std::optional<Cut_line<NT>> line =
+      cut_line(trisector.geometry<NT>(), to_vector<NT>(cut), to_number<NT>(offset));
+  if (!line) {
+    if constexpr (std::is_same_v<NT, Interval>) throw Uncertain_sign();  // parallel only if exactly so
+    return {};
+  }
+  if (certain_sign(line->A) == Sign::ZERO) {
+    if (certain_sign(line->B) != Sign::ZERO) return {Root::SINGLE};
+    return {};
   }
   const Sign d = certain_sign(line->B * line->B - line->A * line->C);
-  if (d == Sign::ZERO) points.emplace_back(trisector, cut, offset, Root::SINGLE);
-  if (d == Sign::POSITIVE)
-    for (const Root r : {Root::MINUS, Root::PLUS}) points.emplace_back(trisector, cut, offset, r);
+  if (d == Sign::ZERO) return {Root::SINGLE};
+  if (d == Sign::POSITIVE) return {Root::MINUS, Root::PLUS};
+  return {};
+}
+
+}  // namespace
+
+std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset) {
+  std::vector<Root> roots;
+  bool decided = false;
+  {
+    Rounding_guard guard;
+    try {
+      roots = roots_of_cut<Interval>(trisector, cut, offset);
+      decided = true;
+    } catch (const Uncertain_sign&) {
+    }
+  }
+  if (!decided) roots = roots_of_cut<Rational>(trisector, cut, offset);
+  std::vector<Curve_point> points;
+  for (const Root r : roots) points.emplace_back(trisector, cut, offset, r);
   return points;
+}
+
+std::optional<Vector4<Interval>> enclosed_canonical_point(const Trisector& t) {
+  try {
+    const Trisector_geometry<Interval>& g = t.geometry<Interval>();
+    const bool closed = g.kind == Trisector_kind::ellipse;
+    const Vector4<Interval>& y = closed ? g.e2 : g.monotone;  // the cut <X, y> = 0 (arc_witness.cpp)
+    const std::optional<Cut_line<Interval>> line = cut_line(g, Vector4<Interval>{y[0], y[1], y[2], -y[3]}, Interval(0));
+    if (!line) return std::nullopt;
+    std::vector<Vector4<Interval>> points;
+    if (certain_sign(line->A) == Sign::ZERO) {
+      const Interval s = -line->C / (Interval(2) * line->B);
+      points.push_back(combination(Interval(1), line->base, s, line->direction));
+    } else {
+      if (certain_sign(line->B * line->B - line->A * line->C) != Sign::POSITIVE) return std::nullopt;
+      const Interval root = CGAL::sqrt(line->B * line->B - line->A * line->C);
+      for (const int sigma : {-1, 1})
+        points.push_back(combination(Interval(1), line->base, (-line->B + Interval(sigma) * root) / line->A, line->direction));
+    }
+    std::optional<Vector4<Interval>> chosen;
+    for (const Vector4<Interval>& x : points) {
+      if (certain_sign(x[3]) != Sign::POSITIVE) continue;  // the other branch
+      if (closed && certain_sign(lorentz_product(x, g.e1)) != Sign::POSITIVE) continue;  // theta = pi
+      if (chosen) return std::nullopt;
+      chosen = x;
+    }
+    return chosen;
+  } catch (const Uncertain_sign&) {
+    return std::nullopt;
+  }
 }
 
 bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut) {

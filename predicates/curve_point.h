@@ -34,6 +34,11 @@ class Curve_point {
 // or MINUS and PLUS. Exact. Nothing when the cut contains all of L or misses it.
 std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset);
 
+// An interval enclosure, in the trisector's frame, of the point that arc_witness(t, nothing, nothing)
+// gives, for the filters of the vertex-free curves; nothing when intervals cannot decide which root it is.
+// Precondition: a Rounding_guard; the trisector is an ellipse, hyperbola or parabola.
+std::optional<Vector4<Interval>> enclosed_canonical_point(const Trisector& t);
+
 // Whether the point is on the sheet X_3 > 0 (a point of the trisector, not of the other branch).
 bool on_sheet(const Curve_point& p);
 

@@ -45,7 +45,10 @@ int run(const Diagram_command& command, std::ostream& out, std::ostream& err) {
     err << "phase seconds\nvertices " << std::chrono::duration<double>(after_vertices - start).count()
         << "\ntopology " << std::chrono::duration<double>(end - after_vertices).count() << "\ndiagram count\nvertices "
         << topology.vertices.vertices.size() << "\nedges " << topology.edges.size() << "\nfaces " << topology.faces.size()
-        << "\ncells " << topology.cells.size() << '\n';
+        << "\ncells " << topology.cells.size() << "\ntopology seconds\nedges " << topology.statistics.edges_seconds
+        << "\nvertex_free " << topology.statistics.vertex_free_seconds << "\nfaces " << topology.statistics.faces_seconds
+        << "\ntopology count\ncandidate_triples " << topology.statistics.candidate_triples << "\ncandidate_pairs "
+        << topology.statistics.candidate_pairs << "\nnested_pairs " << topology.statistics.nested_pairs << '\n';
   }
   return EXIT_OK;
 }

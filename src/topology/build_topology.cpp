@@ -4,6 +4,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -51,16 +52,29 @@ Octree_regions regions_for_every_site(const Diagram& diagram) {
 
 Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram, const Octree_regions& regions,
                                 const Topology_options& options) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+  auto start = Clock::now();
   Diagram_topology topology = build_edges(sites, std::move(diagram), options);
+  Topology_statistics& s = topology.statistics;
+  s.edges_seconds = seconds(start);
+  start = Clock::now();
   Vertex_free_parts parts = vertex_free_parts(sites, topology.vertices, topology.edges, regions);
   for (Diagram_edge& e : parts.edges) topology.edges.push_back(std::move(e));
   std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
-  add_faces_and_cells(sites, topology, parts.sheets);
+  s.vertex_free_seconds = seconds(start);
+  s.candidate_triples = parts.candidate_triples;
+  s.candidate_pairs = parts.candidate_pairs;
+  start = Clock::now();
+  add_faces_and_cells(sites, topology, parts.sheets, regions.escaping);
+  s.faces_seconds = seconds(start);
   return topology;
 }
 
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
-                         const std::vector<std::pair<Site_index, Site_index>>& whole_sheets) {
+                         const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
+                         const std::vector<Site_index>& escaping) {
+  const auto escapes = [&](Site_index s) { return std::binary_search(escaping.begin(), escaping.end(), s); };
   const Diagram& diagram = topology.vertices;
   for (const auto& [a, b] : whole_sheets) topology.faces.push_back({a, b, {}, false});
   // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
@@ -71,9 +85,12 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
     std::vector<const Boundary_component*> of_pair;
     while (end < components.size() && components[end].a == components[i].a && components[end].b == components[i].b)
       of_pair.push_back(&components[end++]);
-    if (of_pair.size() == 1 && !of_pair.front()->closed) {
-      topology.faces.push_back({components[i].a, components[i].b, {components[i].edges}, false});
+    if (of_pair.size() == 1 && (!of_pair.front()->closed || !escapes(of_pair.front()->a) || !escapes(of_pair.front()->b))) {
+      // An open chain alone bounds one unbounded face; a closed cycle alone of sites that own no point
+      // far away bounds one bounded face (it contains no neighbourhood of infinity).
+      topology.faces.push_back({components[i].a, components[i].b, {components[i].edges}, of_pair.front()->closed});
     } else {
+      ++topology.statistics.nested_pairs;
       const Face_grouping grouping = group_components(sites, diagram, topology.edges, of_pair);
       for (std::size_t f = 0; f < grouping.faces.size(); ++f) {
         Diagram_face face{components[i].a, components[i].b, {}, grouping.bounded[f]};

@@ -27,7 +27,10 @@ Octree_regions regions_for_every_site(const Diagram& diagram);
 // The steps of build_topology, for tests: the edges that have a vertex (faces and cells left empty), and
 // the faces and cells from all the edges and the whole-sheet faces.
 Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
+// `escaping` (ascending) must contain every site that owns a point outside some bounded region (the
+// octree's escaping sites, or every site): a face of two sites not both in it is bounded.
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
-                         const std::vector<std::pair<Site_index, Site_index>>& whole_sheets = {});
+                         const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
+                         const std::vector<Site_index>& escaping);
 
 }  // namespace apollonius

@@ -36,6 +36,12 @@ struct Diagram_cell {
   bool bounded = false;
 };
 
+// What building it did, for --stats.
+struct Topology_statistics {
+  double edges_seconds = 0, vertex_free_seconds = 0, faces_seconds = 0;
+  std::size_t candidate_triples = 0, candidate_pairs = 0, nested_pairs = 0;
+};
+
 // Invariants: edges sorted by tie set, then start, then end (a missing end first); faces by (a, b), then
 // by their first boundary edge; cells ascending by site. Every id refers into these lists or to
 // vertices.vertices.
@@ -44,6 +50,7 @@ struct Diagram_topology {
   std::vector<Diagram_edge> edges;
   std::vector<Diagram_face> faces;
   std::vector<Diagram_cell> cells;
+  Topology_statistics statistics;
 };
 
 }  // namespace apollonius

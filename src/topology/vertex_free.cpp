@@ -5,6 +5,7 @@
 #include <set>
 
 #include "predicates/arc_witness.h"
+#include "predicates/rounding_guard.h"
 #include "predicates/curve_point_in_box.h"
 #include "predicates/sheet_point.h"
 #include "predicates/trisector_predicates.h"
@@ -59,6 +60,69 @@ std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& bas
   return tie;
 }
 
+// The filter of the curve's test: decides from an interval enclosure of its canonical point W (which holds
+// the exact W) when the intervals are certain: nothing = no edge; a tie set = the triple alone. Else
+// undecided (the exact test follows).
+enum class Filtered_outcome { no_edge, edge, undecided };
+
+Filtered_outcome filtered_curve_test(const Trisector& t, const std::vector<Site>& sites, const Octree_regions& regions,
+                                     const Occurrences& seen) {
+  Rounding_guard guard;
+  const std::optional<Vector4<Interval>> enclosure = enclosed_canonical_point(t);
+  if (!enclosure) return Filtered_outcome::undecided;
+  const Vector4<Interval>& X = *enclosure;
+  const Site& o = t.origin();
+  const Interval half(0.5);
+  const std::array<Interval, 3> v{Interval(o.x) + X[0] * half, Interval(o.y) + X[1] * half, Interval(o.z) + X[2] * half};
+  const auto inside = [&](const Axis_box& b) {  // certainly inside, certainly not, or unsure
+    bool in = true, out = false;
+    for (int k = 0; k < 3; ++k) {
+      in = in && v[k].inf() >= b.lo[k] && v[k].sup() <= b.hi[k];
+      out = out || v[k].sup() < b.lo[k] || v[k].inf() > b.hi[k];
+    }
+    return in ? 1 : out ? 0 : -1;
+  };
+  const std::vector<Site_index>* test = nullptr;
+  const int in_root = regions.boxes.empty() ? 0 : inside(regions.root);
+  if (in_root < 0) return Filtered_outcome::undecided;
+  if (in_root == 1) {
+    for (std::size_t b : seen.boxes) {
+      const int in = inside(regions.boxes[b].box);
+      if (in < 0) return Filtered_outcome::undecided;
+      if (in == 1) {
+        test = &regions.boxes[b].sites;
+        break;
+      }
+    }
+    // W in no box that holds the triple: the curve is no edge.
+    if (test == nullptr) return Filtered_outcome::no_edge;
+  } else {
+    if (!seen.far) return Filtered_outcome::undecided;
+    test = &regions.escaping;
+  }
+  bool all_farther = true;
+  for (Site_index s : *test) {
+    if (s == t.indices()[0] || s == t.indices()[1] || s == t.indices()[2]) continue;
+    // d_s - r at W (curve_point_conflict): POSITIVE if r + w_s < 0, else the sign of h_s - R_s . X.
+    const Relative_site<Interval> r = relative_site<Interval>(o, sites[s]);
+    const Interval reach = X[3] + Interval(2) * r.row[3];
+    Sign c;
+    try {
+      if (certain_sign(reach) == Sign::NEGATIVE) {
+        c = Sign::POSITIVE;
+      } else {
+        c = certain_sign(r.rhs - (r.row[0] * X[0] + r.row[1] * X[1] + r.row[2] * X[2] + r.row[3] * X[3]));
+      }
+    } catch (const Uncertain_sign&) {
+      all_farther = false;
+      continue;
+    }
+    if (c == Sign::NEGATIVE) return Filtered_outcome::no_edge;
+    if (c != Sign::POSITIVE) all_farther = false;
+  }
+  return all_farther ? Filtered_outcome::edge : Filtered_outcome::undecided;
+}
+
 }  // namespace
 
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
@@ -91,10 +155,22 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     return regions.boxes.size() > 0 && curve_point_in_box(w, regions.root);
   };
   Vertex_free_parts parts;
+  parts.candidate_triples = triples.size();
   for (const auto& [triple, seen] : triples) {
     const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
     const auto [kind, shape] = classify_trisector(t);
     if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola) continue;
+    const Filtered_outcome filtered = filtered_curve_test(t, sites, regions, seen);
+    if (filtered == Filtered_outcome::no_edge) continue;
+    if (filtered == Filtered_outcome::edge) {
+      Diagram_edge e;
+      e.tie_set.assign(triple.begin(), triple.end());
+      e.curve = shape;
+      e.closed = kind == Trisector_kind::ellipse;
+      parts.edges.push_back(std::move(e));
+      edge_sets.push_back(parts.edges.back().tie_set);
+      continue;
+    }
     const Curve_point w = arc_witness(t, std::nullopt, std::nullopt);
     const std::vector<Site_index>* test = nullptr;
     if (in_root(w)) {
@@ -122,6 +198,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   const auto edges_of_site = by_site(sites.size(), edge_sets);
   for (const auto& [pair, seen] : pairs) {
     if (share(edges_of_site[pair.first], edges_of_site[pair.second])) continue;
+    ++parts.candidate_pairs;
     const Site &a = sites[pair.first], &b = sites[pair.second];
     const std::vector<Site_index>* test = nullptr;
     for (std::size_t box : seen.boxes)

@@ -23,6 +23,7 @@ namespace apollonius {
 struct Vertex_free_parts {
   std::vector<Diagram_edge> edges;                           // closed, or infinite both ways
   std::vector<std::pair<Site_index, Site_index>> sheets;     // faces that are a whole sheet, a < b
+  std::size_t candidate_triples = 0, candidate_pairs = 0;   // those with no vertex, resp. no edge
 };
 
 // `edges` are the edges with a vertex. `regions` from the same octree run as `diagram` (or, for a

@@ -141,8 +141,10 @@ std::string describe(const Edge_key& k) {
 // The brute force decides the vertices of the small degenerate inputs: the octree does not yet finish on some
 // of them (the open issue on many sites tangent to one sphere).
 void check_against_delaunay(const std::vector<Site>& sites, bool brute = false) {
-  Diagram_topology t = build_edges(sites, brute ? brute_force_diagram(sites) : octree_diagram(sites));
-  add_faces_and_cells(sites, t);
+  Octree_regions regions;
+  Diagram diagram = brute ? brute_force_diagram(sites) : octree_diagram(sites, Octree_options{1, nullptr, Arithmetic::certified, &regions});
+  if (brute) regions = regions_for_every_site(diagram);
+  const Diagram_topology t = build_topology(sites, std::move(diagram), regions);
   CHECK(euler_defect(t) == 0);
   std::map<std::pair<Site_index, Site_index>, bool> faces;
   for (const Diagram_face& f : t.faces) {
