@@ -6,8 +6,6 @@
 //  - sides_near_vertex(T, v, s): the sign of d_s - r just after v and just before it, to second order.
 #pragma once
 
-#include <CGAL/Sqrt_extension.h>
-
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -15,6 +13,7 @@
 #include "predicates/compare_vertices.h"
 #include "predicates/filtered_predicate.h"
 #include "predicates/curve_point.h"
+#include "predicates/field_value.h"
 #include "predicates/trisector.h"
 
 namespace apollonius {
@@ -137,27 +136,14 @@ struct Curve_point_conflict_predicate {
 struct Order_around_edge_predicate {
   static constexpr const char* name = "order_around_edge";
   using Exact_number = Rational;
-  using Extension = CGAL::Sqrt_extension<Rational, Rational, CGAL::Tag_true, CGAL::Tag_false>;
 
   template <class NT>
   static std::vector<std::size_t> evaluate(const Trisector& t, const Vertex& v, const std::vector<Site>& sites) {
-    using F = std::conditional_t<std::is_same_v<NT, Rational>, Extension, Interval>;
+    using F = Field_value<NT>;
     const Trisector_geometry<NT>& g = t.geometry<NT>();
     const Field_point<NT> p = field_point_on<NT>(t, v);
-    const auto number = [&](const Field_number<NT>& x) -> F {
-      if constexpr (std::is_same_v<NT, Rational>)
-        return Extension(x.a / x.denominator, x.b / x.denominator, x.d);
-      else
-        return x;
-    };
-    // X_j = <X, J e_j>, with J e_j the Lorentz dual of the j-th unit vector.
-    std::array<F, 4> X;
-    for (int j = 0; j < 4; ++j) {
-      Vector4<NT> unit{NT(0), NT(0), NT(0), NT(0)};
-      unit[j] = j < 3 ? NT(1) : NT(-1);
-      X[j] = number(lorentz_value(p, unit));
-    }
-    const F s = number(lorentz_value(p, g.e1)), u = number(lorentz_value(p, g.e2));
+    const std::array<F, 4> X = field_coordinates<NT>(p);
+    const F s = to_field_value(lorentz_value(p, g.e1)), u = to_field_value(lorentz_value(p, g.e2));
     std::array<F, 3> tangent;  // tau0 = <X, e1> e2 - <X, e2> e1, spatial part
     for (int j = 0; j < 3; ++j) tangent[j] = s * F(g.e2[j]) - u * F(g.e1[j]);
     const Site& a = t.origin();
@@ -166,15 +152,8 @@ struct Order_around_edge_predicate {
       const Vector4<NT> shift = relative_site<NT>(sites[k], a).row;  // p_a - p_s, w_a - w_s
       for (int j = 0; j < 3; ++j) direction[k][j] = X[j] / F(2) + F(shift[j]);
     }
-    const auto turn = [&](std::size_t i, std::size_t j) {  // sign of det(tangent, d_i, d_j)
-      const auto& x = direction[i];
-      const auto& y = direction[j];
-      const F det = tangent[0] * (x[1] * y[2] - x[2] * y[1]) - tangent[1] * (x[0] * y[2] - x[2] * y[0]) +
-                    tangent[2] * (x[0] * y[1] - x[1] * y[0]);
-      if constexpr (std::is_same_v<NT, Rational>)
-        return static_cast<Sign>(CGAL::sign(det));
-      else
-        return certain_sign(det);
+    const auto turn = [&](std::size_t i, std::size_t j) {
+      return sign_of_field_value(determinant(tangent, direction[i], direction[j]));
     };
     // Half 0: the first direction and those a positive turn from it; half 1: the rest (the opposite one
     // first). The directions are distinct (distinct tangent points of one sphere) and no two opposite but
@@ -206,24 +185,16 @@ struct Order_around_edge_predicate {
 struct Face_side_predicate {
   static constexpr const char* name = "face_side";
   using Exact_number = Rational;
-  using Extension = CGAL::Sqrt_extension<Rational, Rational, CGAL::Tag_true, CGAL::Tag_false>;
 
   template <class NT>
   static Sign evaluate(const Curve_point& p, const Site& a, const Site& b, const Site& c,
                        const std::array<Rational, 3>& level, const std::array<Rational, 3>& across) {
-    using F = std::conditional_t<std::is_same_v<NT, Rational>, Extension, Interval>;
+    using F = Field_value<NT>;
     const Trisector& t = p.trisector();
-    const Field_point<NT> x = p.coordinates<NT>();
     // X in a's frame: X_o + 2 (p_o - p_a, w_a - w_o).
+    std::array<F, 4> X = field_coordinates<NT>(p.coordinates<NT>());
     const Vector4<NT> shift = relative_site<NT>(a, t.origin()).row;
-    std::array<F, 4> X;
-    for (int j = 0; j < 4; ++j) {
-      const NT offset = NT(2) * (j < 3 ? shift[j] : -shift[j]);
-      if constexpr (std::is_same_v<NT, Rational>)
-        X[j] = Extension(x.scaled[j].a / x.denominator + offset, x.scaled[j].b / x.denominator, x.discriminant);
-      else
-        X[j] = x.X[j] + offset;
-    }
+    for (int j = 0; j < 4; ++j) X[j] = X[j] + F(NT(2) * (j < 3 ? shift[j] : -shift[j]));
     const Vector4<NT> rb = relative_site<NT>(a, b).row, rc = relative_site<NT>(a, c).row;
     const auto number = [](const Rational& q) -> F {
       if constexpr (std::is_same_v<NT, Rational>)
@@ -244,12 +215,7 @@ struct Face_side_predicate {
                       rows[0][c3[2]] * (rows[1][c3[0]] * rows[2][c3[1]] - rows[1][c3[1]] * rows[2][c3[0]]);
       xi[i] = i % 2 == 0 ? minor : -minor;
     }
-    const auto sign = [](const F& v) {
-      if constexpr (std::is_same_v<NT, Rational>)
-        return static_cast<Sign>(CGAL::sign(v));
-      else
-        return certain_sign(v);
-    };
+    const auto sign = [](const F& v) { return sign_of_field_value(v); };
     const Sign along = sign(number(across[0]) * xi[0] + number(across[1]) * xi[1] + number(across[2]) * xi[2]);
     const Sign farther = sign(-(F(rc[0]) * xi[0] + F(rc[1]) * xi[1] + F(rc[2]) * xi[2] + F(rc[3]) * xi[3]));
     return along * farther;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "predicates/sheet_fan.h"
 #include "predicates/trisector_predicates.h"
 
 namespace apollonius {
@@ -37,6 +39,52 @@ struct Half_edge {
   Pair pair;
 };
 
+// The ends (2 h + side) of the half-edges of one pair at one vertex, two by two as they bound the face's
+// sectors there. More than two when the vertex has 5 or more tied sites: by their order around the vertex
+// on the pair's sheet, starting at a branch whose face side is decided (sheet_fan.h).
+std::vector<std::array<std::size_t, 2>> sectors_at_vertex(const std::vector<Site>& sites, const Diagram& diagram,
+                                                         const std::vector<Diagram_edge>& edges,
+                                                         const std::vector<Half_edge>& halves, std::size_t vertex,
+                                                         const Pair& pair, const std::vector<std::size_t>& ends) {
+  const std::string where = "at vertex " + std::to_string(vertex) + ", the faces of sites " +
+                            std::to_string(pair.first) + " and " + std::to_string(pair.second) + " meet " +
+                            std::to_string(ends.size()) + " edges";
+  if (ends.size() == 2) return {{ends[0], ends[1]}};
+  if (ends.size() % 2 != 0) throw std::logic_error(where);
+  std::vector<std::unique_ptr<Trisector>> curves;
+  std::vector<Sheet_branch> branches;
+  for (std::size_t end : ends) {
+    const std::vector<Site_index>& tie = edges[halves[end / 2].edge].tie_set;
+    const std::array<Site_index, 3> triple{tie[0], tie[1], tie[2]};
+    curves.push_back(std::make_unique<Trisector>(
+        triple, std::array<Site, 3>{sites[triple[0]], sites[triple[1]], sites[triple[2]]}));
+    std::optional<Site> third;
+    if (tie.size() == 3)
+      for (Site_index s : tie)
+        if (s != pair.first && s != pair.second) third = sites[s];
+    branches.push_back({curves.back().get(), end % 2 == 0 ? +1 : -1, third});
+  }
+  const Vertex& v = diagram.vertices[vertex].vertex;
+  const Site &a = sites[pair.first], &b = sites[pair.second];
+  const std::vector<std::size_t> order = order_on_sheet(v, a, b, branches);
+  const std::size_t n = order.size();
+  std::vector<Sign> turns(n);
+  for (std::size_t k = 0; k < n; ++k) turns[k] = face_turn(v, a, b, branches[order[k]]);
+  const auto decided = std::find_if(turns.begin(), turns.end(), [](Sign s) { return s != Sign::ZERO; });
+  if (decided == turns.end()) throw std::logic_error(where + ": no face side decided at first order");
+  // Sector k: from order[k] counterclockwise to order[k + 1]; the face is in every other one.
+  const std::size_t first = static_cast<std::size_t>(decided - turns.begin());
+  const std::size_t offset = *decided == Sign::POSITIVE ? first % 2 : (first + 1) % 2;
+  std::vector<std::array<std::size_t, 2>> sectors;
+  for (std::size_t k = offset; k < n; k += 2) {
+    const std::size_t next = (k + 1) % n;
+    if (turns[k] == Sign::NEGATIVE || turns[next] == Sign::POSITIVE)
+      throw std::logic_error(where + ": their face sides do not alternate");
+    sectors.push_back({ends[order[k]], ends[order[next]]});
+  }
+  return sectors;
+}
+
 }  // namespace
 
 std::vector<Boundary_component> boundary_components(const std::vector<Site>& sites, const Diagram& diagram,
@@ -54,14 +102,11 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
     if (e.start) at_vertex[{*e.start, halves[h].pair}].push_back(2 * h);
     if (e.end) at_vertex[{*e.end, halves[h].pair}].push_back(2 * h + 1);
   }
-  for (const auto& [key, ends] : at_vertex) {
-    if (ends.size() != 2)
-      throw std::logic_error("at vertex " + std::to_string(key.first) + ", the faces of sites " +
-                             std::to_string(key.second.first) + " and " + std::to_string(key.second.second) + " meet " +
-                             std::to_string(ends.size()) + " edges: not decided in this version");
-    link[ends[0] / 2][ends[0] % 2] = ends[1];
-    link[ends[1] / 2][ends[1] % 2] = ends[0];
-  }
+  for (const auto& [key, ends] : at_vertex)
+    for (const auto& [x, y] : sectors_at_vertex(sites, diagram, edges, halves, key.first, key.second, ends)) {
+      link[x / 2][x % 2] = y;
+      link[y / 2][y % 2] = x;
+    }
 
   // Walk: from a half-edge out of its end side, until back at the start or at infinity; an open chain is
   // then extended from the start's other side.

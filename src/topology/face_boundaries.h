@@ -1,8 +1,9 @@
 // The faces of the diagram from its edges (paper section 5.4). Along an edge with tie set T, the sites of
 // T that are consecutive around it (all three pairs when |T| = 3; order_around_edge otherwise) each
 // share a face, on that side of the edge: a half-edge (edge, pair). At a vertex, the half-edges of one
-// pair meet in twos, and a face's boundary goes from one to the other; walking so gives every boundary
-// component, closed or an open chain between two ends at infinity.
+// pair bound the face's sectors there in twos (more than two only at a vertex of 5 or more tied sites:
+// paired by their order on the sheet, sheet_fan.h), and a face's boundary goes from one to the other;
+// walking so gives every boundary component, closed or an open chain between two ends at infinity.
 #pragma once
 
 #include <utility>
@@ -20,8 +21,8 @@ struct Boundary_component {
 };
 
 // Every boundary component, by pair, then by first edge. Throws std::logic_error where the half-edges of
-// a pair at a vertex do not meet in twos (a configuration this version does not decide: reported, never
-// guessed).
+// a pair at a vertex cannot be paired: an odd number, or tangent edges not decided at second order (a
+// configuration this version does not decide: reported, never guessed).
 std::vector<Boundary_component> boundary_components(const std::vector<Site>& sites, const Diagram& diagram,
                                                     const std::vector<Diagram_edge>& edges);
 
