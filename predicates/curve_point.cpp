@@ -168,6 +168,16 @@ std::optional<Vector4<Interval>> enclosed_canonical_point(const Trisector& t) {
 }
 
 bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut) {
+  {  // The interval e1, e2 enclose the exact ones (trisector.h): a certainly nonzero product decides.
+    Rounding_guard guard;
+    try {
+      const Trisector_geometry<Interval>& g = trisector.geometry<Interval>();
+      const Vector4<Interval> c = to_vector<Interval>(cut);
+      if (certain_sign(euclidean_product(c, g.e1)) != Sign::ZERO || certain_sign(euclidean_product(c, g.e2)) != Sign::ZERO)
+        return false;
+    } catch (const Uncertain_sign&) {
+    }
+  }
   const Trisector_geometry<Rational>& g = trisector.geometry<Rational>();
   return certain_sign(euclidean_product(cut, g.e1)) == Sign::ZERO && certain_sign(euclidean_product(cut, g.e2)) == Sign::ZERO;
 }

@@ -1,11 +1,15 @@
 #include "topology/face_nesting.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
+#include <functional>
+#include <optional>
 #include <numeric>
 #include <stdexcept>
 
 #include "predicates/rational_between.h"
+#include "predicates/rounding_guard.h"
 #include "predicates/trisector_predicates.h"
 
 namespace apollonius {
@@ -35,11 +39,63 @@ Rational level_offset(const Vector3& e, const Site& o, const Rational& y) {
   return y - (e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z));
 }
 
-// e . v at a point of the trisector, exactly.
-template <class P>
-Root_number<Rational> coordinate(const Trisector& t, const P& p, const Vector3& e) {
-  const Site& o = t.origin();
-  return euclidean_value(field_point_on<Rational>(t, p), level_cut(e), e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z));
+// e . v at a point of a trisector: an interval enclosure first (the whole line when intervals fail), the
+// exact value on first need, when two enclosures overlap.
+class Level_value {
+ public:
+  template <class P>
+  Level_value(const Trisector& t, const P& p, const Vector3& e) {
+    const Site& o = t.origin();
+    const Rational offset = e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z);
+    {
+      Rounding_guard guard;
+      try {
+        const Vector4<Rational> cut = level_cut(e);
+        const Vector4<Interval> y{Interval(CGAL::to_interval(cut[0])), Interval(CGAL::to_interval(cut[1])),
+                                  Interval(CGAL::to_interval(cut[2])), Interval(0)};
+        enclosure_ = euclidean_value(field_point_on<Interval>(t, p), y, Interval(CGAL::to_interval(offset)));
+      } catch (const Uncertain_sign&) {
+        enclosure_ = Interval::largest();
+      }
+    }
+    exact_ = [&t, p, e, offset]() { return euclidean_value(field_point_on<Rational>(t, p), level_cut(e), offset); };
+  }
+
+  const Interval& enclosure() const { return enclosure_; }
+  const Root_number<Rational>& exact() const {
+    if (!value_) value_ = exact_();
+    return *value_;
+  }
+
+ private:
+  Interval enclosure_;
+  std::function<Root_number<Rational>()> exact_;
+  mutable std::optional<Root_number<Rational>> value_;
+};
+
+bool finite(const Interval& x) { return std::isfinite(x.inf()) && std::isfinite(x.sup()); }
+
+Sign compare_levels(const Level_value& x, const Level_value& y) {
+  if (x.enclosure().sup() < y.enclosure().inf()) return Sign::NEGATIVE;
+  if (y.enclosure().sup() < x.enclosure().inf()) return Sign::POSITIVE;
+  return compare(x.exact(), y.exact());
+}
+
+// A rational strictly between x < y: a dyadic one between their enclosures when they separate (short, so
+// the level lines stay cheap), else rational_between's.
+Rational level_between(const Level_value& x, const Level_value& y) {
+  if (finite(x.enclosure()) && finite(y.enclosure()) && x.enclosure().sup() < y.enclosure().inf())
+    return (Rational(x.enclosure().sup()) + Rational(y.enclosure().inf())) / 2;
+  return rational_between(x.exact(), y.exact());
+}
+
+// A rational strictly below (side -1) or above (side +1) x.
+Rational level_beyond(const Level_value& x, int side) {
+  if (finite(x.enclosure()))
+    return Rational(side < 0 ? x.enclosure().inf() : x.enclosure().sup()) + Rational(side);
+  const Root_number<Rational>& v = x.exact();
+  const Root_number<Rational> shifted{v.a + Rational(side) * v.denominator, v.b, v.d, v.denominator};
+  return side < 0 ? rational_between(shifted, v) : rational_between(v, shifted);
 }
 
 // Whether the point lies strictly inside the edge, forward from its start to its end.
@@ -101,40 +157,42 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   d = cross(n, e);
 
   // Critical heights: the vertices' and the extreme points'.
-  std::vector<Root_number<Rational>> heights;
+  std::vector<Level_value> heights;
+  std::vector<std::size_t> vertices_seen;  // a vertex ends several edges: one height
   for (const Pair_edge& pe : pair_edges) {
     const Trisector& t = *pe.trisector;
-    for (const std::optional<std::size_t>& v : {pe.edge->start, pe.edge->end})
-      if (v) heights.push_back(coordinate(t, diagram.vertices[*v].vertex, e));
+    for (const std::optional<std::size_t>& v : {pe.edge->start, pe.edge->end}) {
+      if (!v || std::find(vertices_seen.begin(), vertices_seen.end(), *v) != vertices_seen.end()) continue;
+      vertices_seen.push_back(*v);
+      heights.emplace_back(t, diagram.vertices[*v].vertex, e);
+    }
     // Where e . tau0 = <X, (e . e2) e1 - (e . e1) e2> = 0, tau0 the tangent (trisector_predicates.h).
     const Trisector_geometry<Rational>& g = t.geometry<Rational>();
     const Rational along1 = e[0] * g.e1[0] + e[1] * g.e1[1] + e[2] * g.e1[2];
     const Rational along2 = e[0] * g.e2[0] + e[1] * g.e2[1] + e[2] * g.e2[2];
     const Vector4<Rational> y = combination(along2, g.e1, Rational(-along1), g.e2);
     for (const Curve_point& p : curve_points(t, {y[0], y[1], y[2], -y[3]}, Rational(0)))
-      if (on_sheet(p) && on_edge(pe, p, diagram)) heights.push_back(coordinate(t, p, e));
+      if (on_sheet(p) && on_edge(pe, p, diagram)) heights.emplace_back(t, p, e);
   }
   std::sort(heights.begin(), heights.end(),
-            [](const auto& x, const auto& y) { return compare(x, y) == Sign::NEGATIVE; });
-  heights.erase(std::unique(heights.begin(), heights.end(), [](const auto& x, const auto& y) { return compare(x, y) == Sign::ZERO; }),
+            [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::NEGATIVE; });
+  heights.erase(std::unique(heights.begin(), heights.end(),
+                            [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::ZERO; }),
                 heights.end());
   std::vector<Rational> levels;
-  const auto shifted = [](const Root_number<Rational>& x, int k) {
-    return Root_number<Rational>{x.a + Rational(k) * x.denominator, x.b, x.d, x.denominator};
-  };
   if (heights.empty()) {
     levels.push_back(0);
   } else {
-    levels.push_back(rational_between(shifted(heights.front(), -1), heights.front()));
-    for (std::size_t i = 0; i + 1 < heights.size(); ++i) levels.push_back(rational_between(heights[i], heights[i + 1]));
-    levels.push_back(rational_between(heights.back(), shifted(heights.back(), 1)));
+    levels.push_back(level_beyond(heights.front(), -1));
+    for (std::size_t i = 0; i + 1 < heights.size(); ++i) levels.push_back(level_between(heights[i], heights[i + 1]));
+    levels.push_back(level_beyond(heights.back(), +1));
   }
 
   Union_find sets(components.size());
   std::vector<bool> unbounded(components.size(), false), crossed(components.size(), false);
   for (std::size_t l = 0; l < levels.size(); ++l) {
     struct Crossing {
-      Root_number<Rational> abscissa;
+      Level_value abscissa;
       std::size_t edge;
       Curve_point point;
     };
@@ -142,11 +200,11 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
     for (std::size_t i = 0; i < pair_edges.size(); ++i) {
       const Trisector& t = *pair_edges[i].trisector;
       for (const Curve_point& p : curve_points(t, level_cut(e), level_offset(e, t.origin(), levels[l])))
-        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({coordinate(t, p, d), i, p});
+        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, d), i, p});
     }
     if (crossings.empty()) continue;
     std::sort(crossings.begin(), crossings.end(),
-              [](const Crossing& x, const Crossing& y) { return compare(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
+              [](const Crossing& x, const Crossing& y) { return compare_levels(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
     // The face at the first crossing: on its +d side or before it; then it alternates.
     const Pair_edge& first = pair_edges[crossings.front().edge];
     Site_index third = a;
