@@ -66,39 +66,56 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   s.candidate_triples = parts.candidate_triples;
   s.candidate_pairs = parts.candidate_pairs;
   start = Clock::now();
-  add_faces_and_cells(sites, topology, parts.sheets, regions.escaping);
+  add_faces_and_cells(sites, topology, parts.sheets, regions.escaping, options.threads);
   s.faces_seconds = seconds(start);
   return topology;
 }
 
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
                          const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
-                         const std::vector<Site_index>& escaping) {
+                         const std::vector<Site_index>& escaping, int threads) {
   const auto escapes = [&](Site_index s) { return std::binary_search(escaping.begin(), escaping.end(), s); };
   const Diagram& diagram = topology.vertices;
   for (const auto& [a, b] : whole_sheets) topology.faces.push_back({a, b, {}, false});
   // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
   // (face_nesting.h). Faces are sorted by pair, then by their boundary.
   const std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges);
+  struct Pair_components {
+    std::vector<const Boundary_component*> components;
+    Face_grouping grouping;  // filled when the components' nesting must be decided
+    bool nested = false;
+  };
+  std::vector<Pair_components> pairs;
   for (std::size_t i = 0; i < components.size();) {
-    std::size_t end = i;
-    std::vector<const Boundary_component*> of_pair;
-    while (end < components.size() && components[end].a == components[i].a && components[end].b == components[i].b)
-      of_pair.push_back(&components[end++]);
-    if (of_pair.size() == 1 && (!of_pair.front()->closed || !escapes(of_pair.front()->a) || !escapes(of_pair.front()->b))) {
-      // An open chain alone bounds one unbounded face; a closed cycle alone of sites that own no point
-      // far away bounds one bounded face (it contains no neighbourhood of infinity).
-      topology.faces.push_back({components[i].a, components[i].b, {components[i].edges}, of_pair.front()->closed});
-    } else {
-      ++topology.statistics.nested_pairs;
-      const Face_grouping grouping = group_components(sites, diagram, topology.edges, of_pair);
-      for (std::size_t f = 0; f < grouping.faces.size(); ++f) {
-        Diagram_face face{components[i].a, components[i].b, {}, grouping.bounded[f]};
-        for (std::size_t c : grouping.faces[f]) face.boundary.push_back(of_pair[c]->edges);
-        topology.faces.push_back(std::move(face));
-      }
+    Pair_components p;
+    const Boundary_component& c = components[i];
+    for (; i < components.size() && components[i].a == c.a && components[i].b == c.b; ++i)
+      p.components.push_back(&components[i]);
+    // An open chain alone bounds one unbounded face; a closed cycle alone of sites that own no point far
+    // away bounds one bounded face (it contains no neighbourhood of infinity).
+    p.nested = p.components.size() > 1 || (c.closed && escapes(c.a) && escapes(c.b));
+    pairs.push_back(std::move(p));
+  }
+  // The pairs' nestings are independent: in parallel, each into its own slot, so the output is the same
+  // for every thread count.
+  tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+      if (pairs[k].nested) pairs[k].grouping = group_components(sites, diagram, topology.edges, pairs[k].components);
+    });
+  });
+  for (const Pair_components& p : pairs) {
+    const Boundary_component& c = *p.components.front();
+    if (!p.nested) {
+      topology.faces.push_back({c.a, c.b, {c.edges}, c.closed});
+      continue;
     }
-    i = end;
+    ++topology.statistics.nested_pairs;
+    for (std::size_t f = 0; f < p.grouping.faces.size(); ++f) {
+      Diagram_face face{c.a, c.b, {}, p.grouping.bounded[f]};
+      for (std::size_t k : p.grouping.faces[f]) face.boundary.push_back(p.components[k]->edges);
+      topology.faces.push_back(std::move(face));
+    }
   }
   std::sort(topology.faces.begin(), topology.faces.end(), [](const Diagram_face& x, const Diagram_face& y) {
     return std::tie(x.a, x.b, x.boundary) < std::tie(y.a, y.b, y.boundary);

@@ -15,8 +15,9 @@ struct Topology_options {
 
 // The whole diagram of `sites` from its complete vertex diagram and the regions of the same octree run
 // (octree_diagram with Octree_options::regions), or from brute_force_diagram and
-// regions_for_every_site. Throws std::logic_error for what this version does not decide: degenerate
-// vertices where one pair's faces meet more than two edges, degenerate edges with no vertex.
+// regions_for_every_site. Throws std::logic_error for what this version does not decide: at a vertex of
+// 5 or more tied sites, two tangent edges of one face not told apart at second order; degenerate edges
+// with no vertex.
 Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram, const Octree_regions& regions,
                                 const Topology_options& options = {});
 
@@ -31,6 +32,6 @@ Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, co
 // octree's escaping sites, or every site): a face of two sites not both in it is bounded.
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
                          const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
-                         const std::vector<Site_index>& escaping);
+                         const std::vector<Site_index>& escaping, int threads = 1);
 
 }  // namespace apollonius

@@ -281,3 +281,40 @@ TEST_CASE("generate -o writes the same text as to standard output") {
   CHECK(run({"generate", "cospherical", "--n", "12", "--seed", "3", "-o", out}).code == EXIT_OK);
   CHECK(read_file(out) == to_stdout.out);
 }
+
+TEST_CASE("diagram: the whole diagram as JSON or topology, the same for every thread count") {
+  Scratch scratch;
+  // ANO1_0CONNECT: four vertices, a cell with no vertex, a closed edge that is a hole in a face.
+  const std::string input = std::string(APOLLONIUS_TEST_DATA) + "/vdrc/ANO1_0CONNECT.txt";
+  const Cli_result json = run({"diagram", input});
+  REQUIRE(json.code == EXIT_OK);
+  CHECK(json.out.find("\"format\": \"apollonius3d-diagram\"") != std::string::npos);
+  CHECK(json.out.find("{\"id\":0,\"sites\":[0,1,2],\"ends\":[],\"curve\":\"ellipse\"}") != std::string::npos);
+  CHECK(json.out.find("{\"site\":2,\"faces\":[1,6],\"bounded\":true}") != std::string::npos);
+  CHECK(run({"diagram", input, "--threads", "2"}).out == json.out);
+
+  const Cli_result topology = run({"diagram", input, "--format", "topology"});
+  REQUIRE(topology.code == EXIT_OK);
+  CHECK(topology.out.find("\"quadrisectors\"") != std::string::npos);
+  CHECK(topology.out.find("[0,1,2]") != std::string::npos);
+
+  const Cli_result stats = run({"diagram", input, "--stats"});
+  CHECK(stats.err.find("nested_pairs") != std::string::npos);
+
+  // Random balls: every thread count gives the same bytes.
+  const std::string random = scratch.path("uniform.balls");
+  REQUIRE(run({"generate", "uniform", "--n", "300", "--seed", "7", "-o", random}).code == EXIT_OK);
+  const std::string one = run({"diagram", random, "--threads", "1"}).out;
+  CHECK(one.find("\"faces\"") != std::string::npos);
+  CHECK(run({"diagram", random, "--threads", "2"}).out == one);
+  CHECK(run({"diagram", random, "--threads", "3"}).out == one);
+
+  // Bad input: file:line and reason, exit 2, no output file.
+  const std::string bad = scratch.write("bad.balls", "0 0 0 1\n1 2 x 1\n");
+  const std::string out = scratch.path("bad.json");
+  const Cli_result failed = run({"diagram", bad, "-o", out});
+  CHECK(failed.code == EXIT_BAD_INPUT);
+  CHECK(failed.err.find("bad.balls:2:") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  CHECK(run({"diagram", input, "--format", "xml"}).code == EXIT_BAD_INPUT);
+}
