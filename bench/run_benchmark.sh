@@ -18,6 +18,7 @@ TIMEOUT=600          # seconds per run; 0 = no limit
 THREADS_SWEEP=0
 SWEEP_THREADS=2
 ONLY=both            # both | voronota | apollonius
+DIAGRAM=0            # also time 'apollonius3d diagram' (the whole diagram) on each input
 
 usage() {
   cat <<EOF
@@ -29,6 +30,8 @@ Usage: $0 [options]
   --timeout SECONDS       limit per run, 0 = none (default: $TIMEOUT); shown as >T
   --threads-sweep         also run apollonius3d with --threads $SWEEP_THREADS (base runs get --threads 1)
   --only both|voronota|apollonius   run only one tool (default: both)
+  --diagram               also run 'apollonius3d diagram' (edges, faces, cells) and report its time,
+                          memory and ratio to 'vertices'
   --work-dir DIR          where inputs/outputs go (env BENCH_WORK_DIR, default bench/work)
 Env: BENCH_DATA_DIR (default bench/data), APOLLONIUS3D (binary), VORONOTA (binary).
 EOF
@@ -46,6 +49,7 @@ while [[ $# -gt 0 ]]; do
     --timeout)         TIMEOUT=$2; shift 2 ;;
     --threads-sweep)   THREADS_SWEEP=1; shift ;;
     --only)            ONLY=$2; shift 2 ;;
+    --diagram)         DIAGRAM=1; shift ;;
     --work-dir)        WORK_DIR=$2; shift 2 ;;
     -h|--help)         usage; exit 0 ;;
     *)                 usage >&2; die "unknown option '$1'" ;;
@@ -155,7 +159,7 @@ ratio() {    # ratio A V -> A/V, or a bound when one side timed out
 # Prints one Markdown table row.
 bench_input() {
   local name=$1 label balls sites r
-  local a_times=() a2_times=() v_times=() a_rss=0 v_rss=0
+  local a_times=() a2_times=() v_times=() d_times=() a_rss=0 v_rss=0 d_rss=0
   label=$(basename "$name" .balls)
   local a_verts=- v_verts=- a_out="$WORK_DIR/out/$label.apollonius.txt" v_out="$WORK_DIR/out/$label.voronota.txt"
   local -a a_base=("$APOLLONIUS" vertices '{}' "${A_ARGS[@]}")
@@ -168,6 +172,12 @@ bench_input() {
       timed_run "$label" apollonius3d "$r" "$balls" "$a_out" "${a_base[@]}"
       if [[ $LAST_STATUS == ok ]]; then a_times+=("$LAST_WALL"); a_verts=$(count_vertices "$a_out"); else a_times+=(T); fi
       (( LAST_RSS > a_rss )) 2>/dev/null && a_rss=$LAST_RSS
+      if (( DIAGRAM )); then
+        timed_run "$label" apollonius3d-diagram "$r" "$balls" "$a_out.diagram.json" \
+          "$APOLLONIUS" diagram '{}' "${A_ARGS[@]}" --threads 1
+        if [[ $LAST_STATUS == ok ]]; then d_times+=("$LAST_WALL"); else d_times+=(T); fi
+        (( LAST_RSS > d_rss )) 2>/dev/null && d_rss=$LAST_RSS
+      fi
       if (( THREADS_SWEEP )); then
         timed_run "$label" "apollonius3d-t$SWEEP_THREADS" "$r" "$balls" "$a_out.t$SWEEP_THREADS" \
           "$APOLLONIUS" vertices '{}' "${A_ARGS[@]}" --threads "$SWEEP_THREADS"
@@ -191,6 +201,11 @@ bench_input() {
       speedup=$(awk -v a="$a_med" -v b="$a2_med" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "n/a" }')
     row+=" $a2_med | $speedup |"
   fi
+  if (( DIAGRAM )); then
+    local d_med
+    d_med=$(median "${d_times[@]}")
+    row+=" $d_med | $(mib "$d_rss") | $(ratio "$d_med" "$a_med") |"
+  fi
   echo "$row"
 }
 
@@ -207,6 +222,10 @@ sep="|---|--:|--:|--:|--:|--:|--:|--:|--:|"
 if (( THREADS_SWEEP )); then
   header+=" apollonius3d ${SWEEP_THREADS} thr s | speed-up 1→${SWEEP_THREADS} |"
   sep+="--:|--:|"
+fi
+if (( DIAGRAM )); then
+  header+=" diagram s | diagram MiB | diagram/vertices |"
+  sep+="--:|--:|--:|"
 fi
 echo "$header"
 echo "$sep"
