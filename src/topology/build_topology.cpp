@@ -59,7 +59,7 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   Topology_statistics& s = topology.statistics;
   s.edges_seconds = seconds(start);
   start = Clock::now();
-  Vertex_free_parts parts = vertex_free_parts(sites, topology.vertices, topology.edges, regions);
+  Vertex_free_parts parts = vertex_free_parts(sites, topology.vertices, topology.edges, regions, options.threads);
   for (Diagram_edge& e : parts.edges) topology.edges.push_back(std::move(e));
   std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
   s.vertex_free_seconds = seconds(start);

@@ -1,8 +1,10 @@
 #include "topology/vertex_free.h"
 
 #include <algorithm>
-#include <map>
-#include <set>
+#include <optional>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "predicates/arc_witness.h"
 #include "predicates/rounding_guard.h"
@@ -34,9 +36,14 @@ bool share(const std::vector<std::size_t>& x, const std::vector<std::size_t>& y)
 }
 
 bool share(const std::vector<std::size_t>& x, const std::vector<std::size_t>& y, const std::vector<std::size_t>& z) {
-  std::vector<std::size_t> xy;
-  std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(xy));
-  return share(xy, z);
+  for (std::size_t i = 0, j = 0, k = 0; i < x.size() && j < y.size() && k < z.size();) {
+    const std::size_t top = std::max({x[i], y[j], z[k]});
+    if (x[i] == top && y[j] == top && z[k] == top) return true;
+    if (x[i] < top) ++i;
+    if (j < y.size() && y[j] < top) ++j;
+    if (k < z.size() && z[k] < top) ++k;
+  }
+  return false;
 }
 
 // Where the candidates were seen: the boxes (positions in regions.boxes); far: in a far field patch.
@@ -126,50 +133,64 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const std::vector<Site>
 }  // namespace
 
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
-                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions) {
+                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads) {
   std::vector<std::vector<Site_index>> vertex_sets, edge_sets;
   for (const Diagram_vertex& v : diagram.vertices) vertex_sets.push_back(v.tie_set);
   for (const Diagram_edge& e : edges) edge_sets.push_back(e.tie_set);
   const auto vertices_of_site = by_site(sites.size(), vertex_sets);
 
-  // Candidate triples and pairs, where each was seen.
-  std::map<Triple, Occurrences> triples;
-  std::map<Pair, Occurrences> pairs;
-  const auto note = [&](const std::vector<Site_index>& set, std::optional<std::size_t> box) {
+  // Candidate triples and pairs, where each was seen: (set, box) occurrences, sorted and grouped.
+  constexpr std::size_t kFar = static_cast<std::size_t>(-1);
+  std::vector<std::pair<Triple, std::size_t>> triple_seen;
+  std::vector<std::pair<Pair, std::size_t>> pair_seen;
+  const auto note = [&](const std::vector<Site_index>& set, std::size_t box) {
     for (std::size_t i = 0; i < set.size(); ++i)
       for (std::size_t j = i + 1; j < set.size(); ++j) {
-        Occurrences& p = pairs[{set[i], set[j]}];
-        box ? p.boxes.push_back(*box) : void(p.far = true);
-        for (std::size_t k = j + 1; k < set.size(); ++k) {
-          const Triple t{set[i], set[j], set[k]};
-          if (share(vertices_of_site[t[0]], vertices_of_site[t[1]], vertices_of_site[t[2]])) continue;
-          Occurrences& o = triples[t];
-          box ? o.boxes.push_back(*box) : void(o.far = true);
-        }
+        pair_seen.push_back({{set[i], set[j]}, box});
+        for (std::size_t k = j + 1; k < set.size(); ++k) triple_seen.push_back({{set[i], set[j], set[k]}, box});
       }
   };
   for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
-  for (const std::vector<Site_index>& set : regions.far_sets) note(set, std::nullopt);
+  for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
+  const auto grouped = [&](auto& seen, auto skip) {
+    std::sort(seen.begin(), seen.end());
+    std::vector<std::pair<typename std::decay_t<decltype(seen)>::value_type::first_type, Occurrences>> groups;
+    for (std::size_t i = 0; i < seen.size();) {
+      std::size_t end = i;
+      Occurrences o;
+      for (; end < seen.size() && seen[end].first == seen[i].first; ++end)
+        seen[end].second == kFar ? void(o.far = true) : o.boxes.push_back(seen[end].second);
+      if (!skip(seen[i].first)) groups.push_back({seen[i].first, std::move(o)});
+      i = end;
+    }
+    seen.clear();
+    seen.shrink_to_fit();
+    return groups;
+  };
+  // A triple of three sites with a common vertex has its edges through that vertex already.
+  const auto triples = grouped(triple_seen, [&](const Triple& t) {
+    return share(vertices_of_site[t[0]], vertices_of_site[t[1]], vertices_of_site[t[2]]);
+  });
 
   const auto in_root = [&](const Curve_point& w) {
     return regions.boxes.size() > 0 && curve_point_in_box(w, regions.root);
   };
-  Vertex_free_parts parts;
-  parts.candidate_triples = triples.size();
-  for (const auto& [triple, seen] : triples) {
+  // Each candidate's test is independent: in parallel, each into its own slot.
+  std::vector<std::optional<Diagram_edge>> found(triples.size());
+  const auto test_triple = [&](std::size_t c) {
+    const auto& [triple, seen] = triples[c];
     const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
     const auto [kind, shape] = classify_trisector(t);
-    if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola) continue;
+    if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola) return;
+    Diagram_edge e;
+    e.curve = shape;
+    e.closed = kind == Trisector_kind::ellipse;
     const Filtered_outcome filtered = filtered_curve_test(t, sites, regions, seen);
-    if (filtered == Filtered_outcome::no_edge) continue;
+    if (filtered == Filtered_outcome::no_edge) return;
     if (filtered == Filtered_outcome::edge) {
-      Diagram_edge e;
       e.tie_set.assign(triple.begin(), triple.end());
-      e.curve = shape;
-      e.closed = kind == Trisector_kind::ellipse;
-      parts.edges.push_back(std::move(e));
-      edge_sets.push_back(parts.edges.back().tie_set);
-      continue;
+      found[c] = std::move(e);
+      return;
     }
     const Curve_point w = arc_witness(t, std::nullopt, std::nullopt);
     const std::vector<Site_index>* test = nullptr;
@@ -182,23 +203,28 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     } else if (seen.far) {
       test = &regions.escaping;
     }
-    if (test == nullptr) continue;  // W's region has not all three: the curve is no edge
+    if (test == nullptr) return;  // W's region has not all three: the curve is no edge
     const std::optional<std::vector<Site_index>> tie = tie_at({triple.begin(), triple.end()}, *test, [&](Site_index s) {
       return curve_point_conflict(w, sites[s]);
     });
-    if (!tie || !std::equal(triple.begin(), triple.end(), tie->begin())) continue;  // not in it, or not its smallest triple
-    Diagram_edge e;
+    if (!tie || !std::equal(triple.begin(), triple.end(), tie->begin())) return;  // not in it, or not its smallest triple
     e.tie_set = *tie;
-    e.curve = shape;
-    e.closed = kind == Trisector_kind::ellipse;
-    parts.edges.push_back(std::move(e));
-    edge_sets.push_back(*tie);
-  }
+    found[c] = std::move(e);
+  };
+  tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
+  arena.execute([&] { tbb::parallel_for(std::size_t{0}, triples.size(), test_triple); });
+  Vertex_free_parts parts;
+  parts.candidate_triples = triples.size();
+  for (std::optional<Diagram_edge>& e : found)
+    if (e) {
+      edge_sets.push_back(e->tie_set);
+      parts.edges.push_back(std::move(*e));
+    }
 
   const auto edges_of_site = by_site(sites.size(), edge_sets);
+  const auto pairs = grouped(pair_seen, [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
+  parts.candidate_pairs = pairs.size();
   for (const auto& [pair, seen] : pairs) {
-    if (share(edges_of_site[pair.first], edges_of_site[pair.second])) continue;
-    ++parts.candidate_pairs;
     const Site &a = sites[pair.first], &b = sites[pair.second];
     const std::vector<Site_index>* test = nullptr;
     for (std::size_t box : seen.boxes)

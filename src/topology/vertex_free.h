@@ -9,7 +9,8 @@
 //    against the sites of a box that contains it, or against the escaping sites;
 //  - likewise a pair with no edge has a face only as a whole sheet, decided at the sheet's point on the
 //    segment between the two centres (sheet_point.h), which lies in the sites' bounding box, inside R.
-// Cost: O(k^3) candidate triples per box of k sites; each candidate with no vertex costs one exact witness.
+// Cost: O(k^3) candidate triples per box of k sites, sorted and grouped; each candidate with no vertex
+// costs one witness, filtered, tested in parallel with `threads`.
 #pragma once
 
 #include <utility>
@@ -29,6 +30,7 @@ struct Vertex_free_parts {
 // `edges` are the edges with a vertex. `regions` from the same octree run as `diagram` (or, for a
 // reference, no box and every active site in one far set).
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
-                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions);
+                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions,
+                                    int threads = 1);
 
 }  // namespace apollonius
