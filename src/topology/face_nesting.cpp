@@ -33,6 +33,20 @@ struct Pair_edge {
   Trisector_kind kind;
 };
 
+// The 4D cross product of x, y, z: Euclidean-orthogonal to all three.
+Vector4<Rational> orthogonal_direction(const Vector4<Rational>& x, const Vector4<Rational>& y, const Vector4<Rational>& z) {
+  Vector4<Rational> n;
+  for (int i = 0; i < 4; ++i) {
+    std::array<int, 3> c{};
+    for (int j = 0, k = 0; j < 4; ++j)
+      if (j != i) c[k++] = j;
+    const Rational minor = x[c[0]] * (y[c[1]] * z[c[2]] - y[c[2]] * z[c[1]]) - x[c[1]] * (y[c[0]] * z[c[2]] - y[c[2]] * z[c[0]]) +
+                           x[c[2]] * (y[c[0]] * z[c[1]] - y[c[1]] * z[c[0]]);
+    n[i] = i % 2 == 0 ? minor : -minor;
+  }
+  return n;
+}
+
 // The hyperplane e . v = y in a trisector's frame X = 2 (v - p_o, .): (e / 2) . X = y - e . p_o.
 Vector4<Rational> level_cut(const Vector3& e) { return {e[0] / 2, e[1] / 2, e[2] / 2, Rational(0)}; }
 Rational level_offset(const Vector3& e, const Site& o, const Rational& y) {
@@ -166,12 +180,12 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
       vertices_seen.push_back(*v);
       heights.emplace_back(t, diagram.vertices[*v].vertex, e);
     }
-    // Where e . tau0 = <X, (e . e2) e1 - (e . e1) e2> = 0, tau0 the tangent (trisector_predicates.h).
-    const Trisector_geometry<Rational>& g = t.geometry<Rational>();
-    const Rational along1 = e[0] * g.e1[0] + e[1] * g.e1[1] + e[2] * g.e1[2];
-    const Rational along2 = e[0] * g.e2[0] + e[1] * g.e2[1] + e[2] * g.e2[2];
-    const Vector4<Rational> y = combination(along2, g.e1, Rational(-along1), g.e2);
-    for (const Curve_point& p : curve_points(t, {y[0], y[1], y[2], -y[3]}, Rational(0)))
+    // Where the tangent is level: the tangent at X is the direction of L Lorentz-orthogonal to X
+    // (trisector.h), and the level direction of L is N, Euclidean-orthogonal to R_b, R_c and (e / 2, 0)
+    // (one direction: L is not parallel to the levels); so <X, N> = 0, a cut from the input alone.
+    const Vector4<Rational> N = orthogonal_direction(relative_site<Rational>(t.origin(), t.sites()[1]).row,
+                                                     relative_site<Rational>(t.origin(), t.sites()[2]).row, level_cut(e));
+    for (const Curve_point& p : curve_points(t, {N[0], N[1], N[2], -N[3]}, Rational(0)))
       if (on_sheet(p) && on_edge(pe, p, diagram)) heights.emplace_back(t, p, e);
   }
   std::sort(heights.begin(), heights.end(),
