@@ -130,15 +130,15 @@ struct Curve_point_conflict_predicate {
 };
 
 // The cyclic order of the sites tied along an edge (4 or more: a degenerate edge), around it: at a
-// vertex v on the edge, the order of the directions v - p_s around the edge's forward tangent (positive
+// point v of the edge (a vertex, or a curve point when it has none), the order of the directions v - p_s around the edge's forward tangent (positive
 // turns counterclockwise seen from its head). Consecutive sites in it, and only they, share a face
 // along the edge. Returns the positions in `sites` in that order, starting with the first.
 struct Order_around_edge_predicate {
   static constexpr const char* name = "order_around_edge";
   using Exact_number = Rational;
 
-  template <class NT>
-  static std::vector<std::size_t> evaluate(const Trisector& t, const Vertex& v, const std::vector<Site>& sites) {
+  template <class NT, class P>
+  static std::vector<std::size_t> evaluate(const Trisector& t, const P& v, const std::vector<Site>& sites) {
     using F = Field_value<NT>;
     const Trisector_geometry<NT>& g = t.geometry<NT>();
     const Field_point<NT> p = field_point_on<NT>(t, v);

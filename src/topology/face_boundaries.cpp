@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "predicates/arc_witness.h"
 #include "predicates/sheet_fan.h"
 #include "predicates/trisector_predicates.h"
 
@@ -21,14 +22,13 @@ std::vector<Pair> pairs_around(const std::vector<Site>& sites, const Diagram& di
   const std::vector<Site_index>& tie = e.tie_set;
   if (tie.size() == 3) return {ordered(tie[0], tie[1]), ordered(tie[0], tie[2]), ordered(tie[1], tie[2])};
   const std::optional<std::size_t> at = e.start ? e.start : e.end;
-  if (!at)
-    throw std::logic_error("a degenerate edge of " + std::to_string(tie.size()) +
-                           " tied sites with no vertex: its faces are not decided in this version");
   const std::array<Site_index, 3> triple{tie[0], tie[1], tie[2]};
   const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
   std::vector<Site> tied;
   for (Site_index s : tie) tied.push_back(sites[s]);
-  const std::vector<std::size_t> order = order_around_edge(t, diagram.vertices[*at].vertex, tied);
+  // The order is the same all along the edge: at a vertex of it, or, with none, at its canonical point.
+  const std::vector<std::size_t> order = at ? order_around_edge(t, diagram.vertices[*at].vertex, tied)
+                                            : order_around_edge(t, arc_witness(t, std::nullopt, std::nullopt), tied);
   std::vector<Pair> pairs;
   for (std::size_t k = 0; k < order.size(); ++k) pairs.push_back(ordered(tie[order[k]], tie[order[(k + 1) % order.size()]]));
   return pairs;

@@ -7,7 +7,9 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <map>
+#include <set>
 #include <random>
 #include <string>
 
@@ -105,4 +107,45 @@ TEST_CASE("balls on the four half-axes tangent to one sphere: faces of opposite 
   MESSAGE(split << " faces of opposite sites, each with two edges on one side; " << looped
                 << " inputs with a bounded cell, checked by the Euler relation only");
   CHECK(split >= seeds);
+}
+
+TEST_CASE("equal balls on one circle: one edge with no vertex along the axis, faces between neighbours") {
+  // The twelve integer points of the circle of radius 5.
+  const std::vector<std::array<double, 2>> circle{{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
+                                                  {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    CAPTURE(seed);
+    std::mt19937_64 random(seed);
+    std::vector<std::size_t> chosen;  // positions on the circle, counterclockwise
+    for (std::size_t k = 0; k < circle.size(); ++k)
+      if (random() % 2 == 0) chosen.push_back(k);
+    if (chosen.size() < 4) continue;
+    std::vector<std::size_t> site_of(chosen.size());  // sites in a shuffled input order
+    for (std::size_t i = 0; i < site_of.size(); ++i) site_of[i] = i;
+    std::shuffle(site_of.begin(), site_of.end(), random);
+    std::vector<Site> sites(chosen.size());
+    for (std::size_t i = 0; i < chosen.size(); ++i)
+      sites[site_of[i]] = {circle[chosen[i]][0], circle[chosen[i]][1], 0.0, 1.0};
+    const Diagram diagram = brute_force_diagram(sites);
+    const Diagram_topology t = build_topology(sites, diagram, regions_for_every_site(diagram));
+    CHECK(diagram.vertices.empty());
+    REQUIRE(t.edges.size() == 1);
+    CHECK(t.edges[0].tie_set.size() == sites.size());
+    CHECK_FALSE(t.edges[0].start);
+    CHECK_FALSE(t.edges[0].end);
+    CHECK(t.edges[0].curve == Curve_shape::line);
+    REQUIRE(t.faces.size() == sites.size());
+    std::set<std::pair<Site_index, Site_index>> expected, faces;
+    for (std::size_t i = 0; i < chosen.size(); ++i) {
+      const Site_index a = site_of[i], b = site_of[(i + 1) % chosen.size()];
+      expected.insert(std::minmax(a, b));
+    }
+    for (const Diagram_face& f : t.faces) {
+      faces.insert({f.a, f.b});
+      CHECK(f.boundary == std::vector<std::vector<std::size_t>>{{0}});
+      CHECK_FALSE(f.bounded);
+    }
+    CHECK(faces == expected);
+    CHECK(euler_defect(t) == 0);
+  }
 }
