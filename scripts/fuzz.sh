@@ -4,7 +4,7 @@
 # Corpora grow in build-fuzz/corpus/TARGET (fuzz_read_sites starts from the inputs of tests/data,
 # examples/ and tests/fuzz/seeds); crashing, leaking and slow inputs are kept in build-fuzz/artifacts/TARGET/.
 # Exits 1 if any target found one. Reproduce one with build-fuzz/tests/fuzz/TARGET FILE; for
-# fuzz_vertices, APOLLONIUS_FUZZ_PRINT_SITES=1 also prints its sites as balls text.
+# fuzz_vertices and fuzz_diagram, APOLLONIUS_FUZZ_PRINT_SITES=1 also prints its sites as balls text.
 # FUZZ_OPTIONS adds libFuzzer options to every run, e.g. FUZZ_OPTIONS="-fork=1 -ignore_timeouts=1
 # -ignore_ooms=1" to fuzz on past a known slow input.
 set -euo pipefail
@@ -17,10 +17,10 @@ mkdir -p "$build_dir"
 # sees the rounding modes it sets (-frounding-math, from CMakeLists.txt).
 cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DAPOLLONIUS_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" > "$build_dir/cmake.log" 2>&1 || { cat "$build_dir/cmake.log"; exit 1; }
-cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices
+cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices fuzz_diagram
 
 corpus=$build_dir/corpus
-mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices"
+mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices" "$corpus/fuzz_diagram"
 cp tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/* examples/*.pdb tests/fuzz/seeds/* \
   "$corpus/fuzz_read_sites/"
 
@@ -28,9 +28,10 @@ cp tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/* examples/*.p
 declare -A options=(
   [fuzz_read_sites]="-dict=tests/fuzz/read_sites.dict"
   [fuzz_vertices]="-max_len=512"
+  [fuzz_diagram]="-max_len=512"
 )
 status=0
-for target in fuzz_read_sites fuzz_vertices; do
+for target in fuzz_read_sites fuzz_vertices fuzz_diagram; do
   artifacts=$build_dir/artifacts/$target
   mkdir -p "$artifacts"
   echo "fuzz: $target for $seconds s (log: $build_dir/$target.log)"

@@ -1,0 +1,78 @@
+// libFuzzer target: the whole diagram of a small site set decoded from the bytes (fuzz_sites.h), built
+// from the brute-force vertices with every site a candidate, and from the octree's vertices and regions.
+// Both must equal: the same edges as the brute-force edge reference, the same faces and cells, and the
+// Euler relation must hold. A disagreement prints the sites and traps; any exception is a finding (the
+// octree's documented overflow near the double range aside), including build_topology's "not decided".
+#include <cstdint>
+#include <cstdlib>
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "fuzz/fuzz_sites.h"
+#include "io/write_sites.h"
+#include "octree/octree_diagram.h"
+#include "reference/brute_force_diagram.h"
+#include "reference/brute_force_edges.h"
+#include "topology/build_topology.h"
+#include "topology/euler_characteristic.h"
+
+namespace {
+
+using namespace apollonius;
+
+bool same_edges(const std::vector<Diagram_edge>& a, const std::vector<Diagram_edge>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].tie_set != b[i].tie_set || a[i].start != b[i].start || a[i].end != b[i].end ||
+        a[i].closed != b[i].closed || a[i].curve != b[i].curve)
+      return false;
+  return true;
+}
+
+bool same_faces_and_cells(const Diagram_topology& a, const Diagram_topology& b) {
+  if (a.faces.size() != b.faces.size() || a.cells.size() != b.cells.size()) return false;
+  for (std::size_t i = 0; i < a.faces.size(); ++i)
+    if (a.faces[i].a != b.faces[i].a || a.faces[i].b != b.faces[i].b || a.faces[i].boundary != b.faces[i].boundary ||
+        a.faces[i].bounded != b.faces[i].bounded)
+      return false;
+  for (std::size_t i = 0; i < a.cells.size(); ++i)
+    if (a.cells[i].site != b.cells[i].site || a.cells[i].faces != b.cells[i].faces || a.cells[i].bounded != b.cells[i].bounded)
+      return false;
+  return true;
+}
+
+[[noreturn]] void report(const char* what, const std::vector<Site>& sites) {
+  std::cerr << what << " on these sites:\n";
+  write_sites_text(std::cerr, sites, "fuzz_diagram input");
+  __builtin_trap();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::vector<Site> sites;
+  if (!fuzzing::decode_sites(data, size, sites)) return -1;
+  static const bool print_sites = std::getenv("APOLLONIUS_FUZZ_PRINT_SITES") != nullptr;
+  if (print_sites) {
+    write_sites_text(std::cout, sites, "fuzz_diagram input");
+    std::cout.flush();
+  }
+  const Diagram reference = brute_force_diagram(sites);
+  const Diagram_topology brute = build_topology(sites, reference, regions_for_every_site(reference));
+  if (!same_edges(brute.edges, brute_force_edges(sites, reference))) report("edges differ from the brute-force edges", sites);
+  if (euler_defect(brute) != 0) report("the Euler relation fails", sites);
+
+  Octree_regions regions;
+  Diagram vertices;
+  try {
+    vertices = octree_diagram(sites, Octree_options{1, nullptr, Arithmetic::certified, &regions});
+  } catch (const std::overflow_error&) {
+    if (fuzzing::centres_reach_double_range_limit(sites)) return 0;
+    throw;
+  }
+  const Diagram_topology octree = build_topology(sites, vertices, regions);
+  if (!same_edges(octree.edges, brute.edges) || !same_faces_and_cells(octree, brute))
+    report("the octree's regions and every-site candidates give different diagrams", sites);
+  return 0;
+}
