@@ -25,12 +25,13 @@ struct Box_graph {
   std::vector<std::size_t> neighbour_start, neighbours;
   std::vector<std::vector<std::pair<Site_index, Witness_expansion>>> witnesses;
 
-  explicit Box_graph(const Seed_partition& partition)
+  Box_graph(const Seed_partition& partition, const Cancellation* cancellation)
       : box(partition.id_count()),
         frame(partition.id_count()),
         neighbour_start(partition.id_count() + 1, 0),
         witnesses(partition.id_count()) {
     for (std::size_t id = 0; id < partition.id_count(); ++id) {
+      if (id % 4096 == 0) throw_if_cancelled(cancellation);
       if (partition.is_box(id)) {
         box[id] = partition.box(id);
         frame[id] = frame_of(box[id]);
@@ -138,7 +139,7 @@ std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site
                                                           const std::vector<Site_index>& active,
                                                           const Seed_partition& partition, double slack,
                                                           const Cancellation* cancellation) {
-  Box_graph graph(partition);
+  Box_graph graph(partition, cancellation);
   find_witnesses(graph, sites, active, partition, cancellation);
 
   tbb::enumerable_thread_specific<Flood> floods(partition.id_count());
@@ -153,6 +154,7 @@ std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site
   for (std::size_t b = 0; b < candidates.size(); ++b) candidates[b].reserve(count[b]);
   for (const Flood& f : floods)
     for (const auto& [b, s] : f.entered) candidates[b].push_back(s);
+  throw_if_cancelled(cancellation);
   // The same lists for every thread count.
   for (auto& list : candidates) std::sort(list.begin(), list.end());
   return candidates;
