@@ -8,6 +8,7 @@ cd "${BUILD_DIR:-build}"
 # install-deps.sh installed what the module needs: a suite without it would test less than it says (but
 # sanitizer and fuzz builds leave the module out, and -DAPOLLONIUS_PYTHON=OFF asks to).
 if ! grep -qE "^APOLLONIUS_(SANITIZE|FUZZ):BOOL=ON|^APOLLONIUS_PYTHON:BOOL=OFF" CMakeCache.txt; then
-  ctest -N | grep -q "python/pytest" || { echo "test: the Python module was not built (see cmake.log)"; exit 1; }
+  listed=$(ctest -N)  # not piped into grep -q, which would stop ctest early and fail the pipe
+  grep -q "python/pytest" <<< "$listed" || { echo "test: the Python module was not built (see cmake.log)"; exit 1; }
 fi
 ctest -j "$(nproc)" --output-on-failure
