@@ -86,7 +86,7 @@ void bind_certify(py::module_& module) {
                     "int64: the certified vertices (as vertices() orders them) that no claim represents")
       .def_readonly("summary", &Certification_result::summary,
                     "the command line's summary: the counts and the first ten discrepancies")
-      .def("__bool__", [](const Certification_result& r) { return r.passed; }, "passed")
+      .def("__bool__", [](const Certification_result& r) { return r.passed; }, "True when passed.")
       .def("__repr__", [](const Certification_result& r) {
         return std::string("<Certification: ") + (r.passed ? "passed" : "failed") + ", " +
                std::string(py::str(r.counts["discrepancies"])) + " discrepancies>";

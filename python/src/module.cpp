@@ -15,6 +15,9 @@ PYBIND11_MODULE(apollonius3d, module) {
       "Bad input raises ValueError with the command line's message; internal errors raise RuntimeError.\n"
       "Computations release the GIL, and Ctrl-C stops them within a fraction of a second.";
   module.attr("__version__") = APOLLONIUS3D_VERSION;
+  // Each docstring starts with its signature, written for people (pybind11's shows "object" for arrays).
+  pybind11::options options;
+  options.disable_function_signatures();
   apollonius::python::bind_errors(module);
   apollonius::python::bind_read_sites(module);
   apollonius::python::bind_vertices(module);
