@@ -2,6 +2,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,17 +17,39 @@ using namespace pybind11::literals;
 namespace apollonius::python {
 namespace {
 
-// A Python str of bytes that should be UTF-8 (names in structure files); an invalid byte becomes U+FFFD.
-py::str utf8_str(const std::string& text) {
-  return py::reinterpret_steal<py::str>(PyUnicode_DecodeUTF8(text.data(), static_cast<py::ssize_t>(text.size()), "replace"));
+// The code points of a name of a structure file: UTF-8, an invalid byte becoming U+FFFD (Python's decoder
+// with "replace"); ASCII, the usual case, without Python.
+std::u32string code_points(const std::string& text) {
+  if (std::all_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
+    return std::u32string(text.begin(), text.end());
+  const py::str decoded = py::reinterpret_steal<py::str>(
+      PyUnicode_DecodeUTF8(text.data(), static_cast<py::ssize_t>(text.size()), "replace"));
+  std::u32string points(static_cast<std::size_t>(PyUnicode_GET_LENGTH(decoded.ptr())), U'\0');
+  if (!points.empty() && PyUnicode_AsUCS4(decoded.ptr(), reinterpret_cast<Py_UCS4*>(points.data()),
+                                          static_cast<py::ssize_t>(points.size()), 0) == nullptr)
+    throw py::error_already_set();
+  return points;
 }
 
-// One column of the labels as a numpy array (str or int64).
+// A str column (numpy's fixed-width UCS-4), written straight into the array that numpy allocates.
 template <class Field>
-py::array label_column(const std::vector<Atom_label>& labels, Field field) {
-  py::list values(labels.size());
-  for (std::size_t i = 0; i < labels.size(); ++i) values[i] = field(labels[i]);
-  return py::module_::import("numpy").attr("array")(values);
+py::array string_column(const std::vector<Atom_label>& labels, Field field) {
+  std::size_t width = 1;  // numpy's narrowest str
+  for (const Atom_label& label : labels) width = std::max(width, code_points(field(label)).size());
+  py::array column = py::module_::import("numpy").attr("zeros")(labels.size(), "dtype"_a = "<U" + std::to_string(width));
+  auto* out = static_cast<char32_t*>(column.mutable_data());
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const std::u32string points = code_points(field(labels[i]));
+    std::copy(points.begin(), points.end(), out + i * width);
+  }
+  return column;
+}
+
+template <class Field>
+py::array_t<std::int64_t> integer_column(const std::vector<Atom_label>& labels, Field field) {
+  py::array_t<std::int64_t> column(static_cast<py::ssize_t>(labels.size()));
+  std::transform(labels.begin(), labels.end(), column.mutable_data(), field);
+  return column;
 }
 
 // Invariant: every column has one entry per site.
@@ -35,16 +59,17 @@ struct Atom_labels {
 };
 
 Atom_labels labels_to_python(const std::vector<Atom_label>& labels) {
-  const auto character = [](char c) { return utf8_str(c == ' ' ? std::string() : std::string(1, c)); };
+  // One-letter codes: '' when absent (' ' in the files).
+  const auto code = [](char c) { return c == ' ' ? std::string() : std::string(1, c); };
   return Atom_labels{
-      label_column(labels, [](const Atom_label& a) { return utf8_str(a.chain); }),
-      label_column(labels, [](const Atom_label& a) { return utf8_str(a.residue_name); }),
-      label_column(labels, [](const Atom_label& a) { return py::int_(a.residue_number); }),
-      label_column(labels, [&](const Atom_label& a) { return character(a.insertion_code); }),
-      label_column(labels, [](const Atom_label& a) { return utf8_str(a.atom_name); }),
-      label_column(labels, [](const Atom_label& a) { return utf8_str(a.element); }),
-      label_column(labels, [&](const Atom_label& a) { return character(a.alternate_location); }),
-      label_column(labels, [](const Atom_label& a) { return py::int_(a.serial); }),
+      string_column(labels, [](const Atom_label& a) { return a.chain; }),
+      string_column(labels, [](const Atom_label& a) { return a.residue_name; }),
+      integer_column(labels, [](const Atom_label& a) { return std::int64_t{a.residue_number}; }),
+      string_column(labels, [&](const Atom_label& a) { return code(a.insertion_code); }),
+      string_column(labels, [](const Atom_label& a) { return a.atom_name; }),
+      string_column(labels, [](const Atom_label& a) { return a.element; }),
+      string_column(labels, [&](const Atom_label& a) { return code(a.alternate_location); }),
+      integer_column(labels, [](const Atom_label& a) { return std::int64_t{a.serial}; }),
       labels.size()};
 }
 

@@ -64,6 +64,10 @@ def test_structure_atoms_and_labels(name):
     radii = {"C": 1.70, "N": 1.55, "O": 1.52, "S": 1.80, "Se": 1.90, "P": 1.80}
     assert sites.weights.tolist() == [radii.get(a["element"], 1.80) for a in atoms]
     assert labels.residue_number.dtype == np.int64 and labels.serial.dtype == np.int64
+    for column in (labels.chain, labels.residue_name, labels.residue_number, labels.insertion_code, labels.atom_name,
+                   labels.element, labels.alternate_location, labels.serial):
+        assert column.flags.owndata and column.shape == (len(sites),)
+        assert column.dtype.kind in "Ui"
 
 
 def test_pept_labels_as_voronota_annotates_them():
