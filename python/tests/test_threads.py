@@ -1,5 +1,6 @@
 """Computations release the GIL: other Python threads run meanwhile, and two computations run at once."""
 import os
+import statistics
 import threading
 import time
 
@@ -57,18 +58,19 @@ def test_two_threads_compute_faster_than_one_after_the_other(protein_1j3h):
         assert run_cli("vertices", REPOSITORY / "bench" / "data" / "pdb" / "1j3h.pdb", "-o", os.devnull)[0] == 0
 
     # Holding the GIL, two threads could only take turns: the ratio would be 1 or more. On two idle cores
-    # it is about 0.5. Other processes share the machine, and a saturated one gains nothing from a second
-    # thread (nor from a second process): the threads must then gain what two processes gain, measured in
-    # the same attempt, and the best of a few attempts counts.
+    # it is about 0.5. Other processes share the machine: when it gives no second core (two processes at
+    # once gain nothing either, measured in the same attempts), there is no gain to measure, and the test
+    # says so rather than pass; test_python_threads_run_during_a_computation shows the GIL released then.
     attempts = []
     for _ in range(5):
         threads = two_runs(in_python, at_once=True) / two_runs(in_python, at_once=False)
         processes = two_runs(in_a_process, at_once=True) / two_runs(in_a_process, at_once=False)
         attempts.append((threads, processes))
-        if threads < 0.8:
-            break
-    print("two at once / one after the other: threads, processes:",
-          "; ".join(f"{t:.2f}, {p:.2f}" for t, p in attempts))
-    assert any(t < 0.8 or (p >= 0.8 and t <= p + 0.15) for t, p in attempts), attempts
-    # And the threads computed the same.
-    assert all((r.points == results[0].points).all() for r in results)
+    report = "; ".join(f"{t:.2f}, {p:.2f}" for t, p in attempts)
+    print("two at once / one after the other: threads, processes:", report)
+    assert all((r.points == results[0].points).all() for r in results)  # and the threads computed the same
+    threads, processes = (statistics.median(ratios) for ratios in zip(*attempts))
+    if processes >= 0.8:
+        pytest.skip(f"the machine gives no second core now: two processes at once take {processes:.2f} of one "
+                    f"after the other (threads, processes: {report})")
+    assert threads < 0.85, report
