@@ -19,6 +19,7 @@
 #include "io/text_input.h"
 #include "octree/octree_diagram.h"
 #include "site_arrays.h"
+#include "thread_count.h"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -97,8 +98,7 @@ void bind_certify(py::module_& module) {
       [](const py::object& centres, const py::object& weights, const py::object& claim,
          const std::optional<std::string>& format, double coord_tol, bool strict, int threads,
          const py::object& report) {
-        if (threads < 1 || threads > 1024)
-          throw py::value_error("threads: needs an integer from 1 to 1024, not " + std::to_string(threads));
+        check_thread_count(threads);
         if (!(coord_tol >= 0) || !std::isfinite(coord_tol))
           throw py::value_error("coord_tol: needs a finite number >= 0, not " + std::string(py::str(py::float_(coord_tol))));
         std::optional<Claim_format> claim_format;
