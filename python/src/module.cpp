@@ -11,6 +11,7 @@ PYBIND11_MODULE(apollonius3d, module) {
       "site indices in every result are 0-based, in input order.\n\n"
       "read_sites(path)            balls text, vdrc, PDB or mmCIF: centres, weights, atom labels\n"
       "vertices(centres, weights)  every vertex of the diagram with its whole tie set\n"
+      "diagram(centres, weights)   the whole diagram: vertices, edges, faces, cells\n"
       "certify(centres, weights, claim)  another program's vertex list, judged claim by claim\n\n"
       "Bad input raises ValueError with the command line's message; internal errors raise RuntimeError.\n"
       "Computations release the GIL, and Ctrl-C stops them within a fraction of a second.";
@@ -21,5 +22,6 @@ PYBIND11_MODULE(apollonius3d, module) {
   apollonius::python::bind_errors(module);
   apollonius::python::bind_read_sites(module);
   apollonius::python::bind_vertices(module);
+  apollonius::python::bind_diagram(module);
   apollonius::python::bind_certify(module);
 }
