@@ -8,6 +8,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
   doctest-dev gemmi-dev tao-pegtl-dev zlib1g-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   voronota time
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel
 )
 if [ "${1:-}" = "--fuzz" ]; then packages+=(clang libclang-rt-dev); fi
 missing=()

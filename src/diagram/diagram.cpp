@@ -9,12 +9,16 @@ namespace apollonius {
 
 template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
-                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices) {
+                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices,
+                         const Cancellation* cancellation) {
   Diagram diagram;
   diagram.site_count = site_count;
   diagram.hidden = std::move(hidden);
   std::vector<std::array<double, 4>> rounded(vertices.size());
-  for (std::size_t k = 0; k < vertices.size(); ++k) rounded[k] = Kernel::printed_coordinates(vertices[k].second);
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    if (k % 1024 == 0) throw_if_cancelled(cancellation);
+    rounded[k] = Kernel::printed_coordinates(vertices[k].second);
+  }
   // docs/contract.md orders lines by printed values; equal printed values fall back to the exact order.
   // Sorted by index, then each vertex moved once: they are large, and one copy of them at a time is enough.
   std::vector<std::size_t> order(vertices.size());
@@ -42,9 +46,11 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
 }
 
 template Diagram assemble_diagram<Certified_kernel>(std::size_t, std::vector<Hidden_site>,
-                                                   std::vector<std::pair<std::vector<Site_index>, Vertex>>);
+                                                   std::vector<std::pair<std::vector<Site_index>, Vertex>>,
+                                                   const Cancellation*);
 template Diagram assemble_diagram<Floating_kernel>(std::size_t, std::vector<Hidden_site>,
-                                                  std::vector<std::pair<std::vector<Site_index>, Vertex>>);
+                                                  std::vector<std::pair<std::vector<Site_index>, Vertex>>,
+                                                  const Cancellation*);
 
 void restrict_to_box(Diagram& diagram, const Axis_box& box) {
   const auto outside = [&](const Diagram_vertex& v) { return !vertex_in_box(v.vertex, box, std::array<bool, 3>{true, true, true}); };

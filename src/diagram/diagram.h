@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "predicates/axis_box.h"
 #include "predicates/site.h"
 #include "predicates/vertex.h"
@@ -39,9 +40,11 @@ struct Diagram {
 void restrict_to_box(Diagram& diagram, const Axis_box& box);
 
 // Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
-// Kernel: kernels.h (the certified one, unless for the floating path).
+// Kernel: kernels.h (the certified one, unless for the floating path). Checks cancellation
+// (cancellation.h) while rounding.
 template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
-                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices);
+                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices,
+                         const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

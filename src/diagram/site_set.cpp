@@ -9,7 +9,7 @@
 namespace apollonius {
 
 template <class Kernel>
-std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
+std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites, const Cancellation* cancellation) {
   const std::size_t n = sites.size();
   std::vector<Hidden_site> hidden;
   if (n < 2) return hidden;
@@ -41,6 +41,7 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
     is_hidden_site[i] = true;
   };
   for (std::size_t a = 0; a < n; ++a) {
+    throw_if_cancelled(cancellation);
     for (std::size_t b = a + 1; b < n && !certainly_apart(by_x[a], by_x[b]); ++b) {
       const Site_index i = by_x[a], j = by_x[b];
       if (Kernel::hidden(sites[i], i, sites[j], j)) record(i, j);
@@ -52,8 +53,8 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites) {
   return hidden;
 }
 
-template std::vector<Hidden_site> classify_hidden_sites<Certified_kernel>(const std::vector<Site>&);
-template std::vector<Hidden_site> classify_hidden_sites<Floating_kernel>(const std::vector<Site>&);
+template std::vector<Hidden_site> classify_hidden_sites<Certified_kernel>(const std::vector<Site>&, const Cancellation*);
+template std::vector<Hidden_site> classify_hidden_sites<Floating_kernel>(const std::vector<Site>&, const Cancellation*);
 
 std::vector<Site_index> active_sites(std::size_t site_count, const std::vector<Hidden_site>& hidden) {
   std::vector<bool> is_hidden_site(site_count, false);

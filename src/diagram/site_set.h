@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "diagram/diagram.h"
 #include "predicates/site.h"
 
@@ -11,9 +12,10 @@ namespace apollonius {
 
 // Every hidden site, ascending. hidden_by is the first identical earlier site for a duplicate, otherwise
 // the smallest index of a site that hides it. Kernel: kernels.h (the certified one, unless for the
-// floating path).
+// floating path). Checks cancellation (cancellation.h) once per site of the sweep.
 template <class Kernel>
-std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites);
+std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites,
+                                               const Cancellation* cancellation = nullptr);
 
 // The indices of the sites not in `hidden`, ascending.
 std::vector<Site_index> active_sites(std::size_t site_count, const std::vector<Hidden_site>& hidden);

@@ -1,6 +1,9 @@
 #include "io/read_sites.h"
 
 #include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string_view>
 
 #include "io/input_error.h"
@@ -115,10 +118,12 @@ Site_input read_sites_from_text(const std::string& content, const std::string& n
 
   // The first data line decides, so that a malformed balls or vdrc file is reported at its bad line
   // rather than as an unknown format.
-  if (first_fields.size() == 1 && is_integer(first_fields[0])) return {parse_vdrc(lines, name), Input_format::vdrc};
-  if (starts_like_number(first_fields[0])) return {parse_balls(lines, name), Input_format::balls};
+  if (first_fields.size() == 1 && is_integer(first_fields[0])) return {parse_vdrc(lines, name), Input_format::vdrc, {}};
+  if (starts_like_number(first_fields[0])) return {parse_balls(lines, name), Input_format::balls, {}};
   if (equals_ignoring_case(first_fields[0].substr(0, 5), "data_") || has_pdb_record(lines)) {
-    return {read_structure(name, &content, options), Input_format::structure};
+    Site_input input{{}, Input_format::structure, {}};
+    input.sites = read_structure(name, &content, options, options.atom_labels ? &input.labels : nullptr);
+    return input;
   }
   throw Input_error(name, first_data_line->number,
                     "unrecognized input format (expected balls 'x y z w', vdrc, PDB or mmCIF)");
@@ -127,9 +132,32 @@ Site_input read_sites_from_text(const std::string& content, const std::string& n
 Site_input read_sites(const std::string& path, const Read_options& options) {
   if (path != "-" && is_structure_path(path)) {
     check_readable(path);  // the same "cannot open" error as for other inputs, before gemmi's own
-    return {read_structure(path, nullptr, options), Input_format::structure};
+    Site_input input{{}, Input_format::structure, {}};
+    input.sites = read_structure(path, nullptr, options, options.atom_labels ? &input.labels : nullptr);
+    return input;
   }
   return read_sites_from_text(read_input_file(path), input_name(path), options);
+}
+
+std::vector<Site> sites_from_arrays(const double* centres, const double* weights, std::size_t count) {
+  if (count == 0) throw Input_error("centres", 0, "empty input: no sites");
+  if (count - 1 > std::numeric_limits<Site_index>::max())
+    throw Input_error("centres", 0, std::to_string(count) + " sites, more than the " +
+                                        std::to_string(std::uint64_t{std::numeric_limits<Site_index>::max()} + 1) +
+                                        " that site indices can name");
+  const auto check = [](double value, const char* array, std::size_t site, const char* coordinate) {
+    if (std::isfinite(value)) return;
+    const std::string printed = std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf";
+    throw Input_error(array, 0, "site " + std::to_string(site) + coordinate + ": not a finite number: " + printed);
+  };
+  std::vector<Site> sites(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double* c = centres + 3 * i;
+    check(c[0], "centres", i, ", x"), check(c[1], "centres", i, ", y"), check(c[2], "centres", i, ", z");
+    check(weights[i], "weights", i, "");
+    sites[i] = Site{c[0], c[1], c[2], weights[i]};
+  }
+  return sites;
 }
 
 }  // namespace apollonius

@@ -69,7 +69,8 @@ void check_finite_position(const gemmi::Atom& atom, const gemmi::Residue& residu
 
 // The sites of one model, in file order. Of the alternate locations of an atom only the first one seen
 // is kept, so that each atom is one ball (one conformer); atoms without an altloc are always kept.
-std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options, const std::string& name) {
+std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& options, const std::string& name,
+                                 std::vector<Atom_label>* labels) {
   std::vector<Site> sites;
   std::map<std::string, char> first_altloc;  // keyed by chain, residue number and atom name
   for (const gemmi::Chain& chain : model.chains) {
@@ -83,6 +84,9 @@ std::vector<Site> sites_of_model(const gemmi::Model& model, const Read_options& 
         }
         check_finite_position(atom, residue, chain, name);
         sites.push_back({atom.pos.x, atom.pos.y, atom.pos.z, van_der_waals_radius(atom.element.elem)});
+        if (labels)
+          labels->push_back(Atom_label{chain.name, residue.name, *residue.seqid.num, residue.seqid.icode, atom.name,
+                                       atom.element.name(), atom.has_altloc() ? atom.altloc : ' ', atom.serial});
       }
     }
   }
@@ -245,7 +249,7 @@ gemmi::Structure parse_structure(const std::string& path_or_name, const std::str
 }  // namespace
 
 std::vector<Site> read_structure(const std::string& path_or_name, const std::string* content,
-                                 const Read_options& options) {
+                                 const Read_options& options, std::vector<Atom_label>* labels) {
   gemmi::Structure structure;
   try {
     structure = parse_structure(path_or_name, content);
@@ -258,7 +262,8 @@ std::vector<Site> read_structure(const std::string& path_or_name, const std::str
     throw input_error_from_gemmi(path_or_name, e.what());
   }
   std::vector<Site> sites;
-  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options, path_or_name);
+  if (labels) labels->clear();
+  if (!structure.models.empty()) sites = sites_of_model(structure.models.front(), options, path_or_name, labels);
   if (sites.empty()) throw Input_error(path_or_name, 0, "no atoms");
   return sites;
 }

@@ -25,12 +25,13 @@ struct Box_graph {
   std::vector<std::size_t> neighbour_start, neighbours;
   std::vector<std::vector<std::pair<Site_index, Witness_expansion>>> witnesses;
 
-  explicit Box_graph(const Seed_partition& partition)
+  Box_graph(const Seed_partition& partition, const Cancellation* cancellation)
       : box(partition.id_count()),
         frame(partition.id_count()),
         neighbour_start(partition.id_count() + 1, 0),
         witnesses(partition.id_count()) {
     for (std::size_t id = 0; id < partition.id_count(); ++id) {
+      if (id % 4096 == 0) throw_if_cancelled(cancellation);
       if (partition.is_box(id)) {
         box[id] = partition.box(id);
         frame[id] = frame_of(box[id]);
@@ -45,7 +46,7 @@ struct Box_graph {
 // their distance at the box centres, and each box keeps the first kWitnesses that reach it (usually the
 // nearest; which sites they are matters for speed only).
 void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std::vector<Site_index>& active,
-                    const Seed_partition& partition) {
+                    const Seed_partition& partition, const Cancellation* cancellation) {
   struct Event {
     double key;  // d of the site at the box centre
     Site_index site;
@@ -78,7 +79,8 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
     events.push({key, s, b});
   };
   for (Site_index s : active) offer(s, partition.home(sites[s]));
-  while (!events.empty()) {
+  for (std::size_t popped = 0; !events.empty(); ++popped) {
+    if (popped % 4096 == 0) throw_if_cancelled(cancellation);
     const Event e = events.top();
     events.pop();
     auto& held = graph.witnesses[e.box];
@@ -135,12 +137,14 @@ void flood(Flood& f, const Box_graph& graph, const std::vector<Site>& sites, con
 
 std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
                                                           const std::vector<Site_index>& active,
-                                                          const Seed_partition& partition, double slack) {
-  Box_graph graph(partition);
-  find_witnesses(graph, sites, active, partition);
+                                                          const Seed_partition& partition, double slack,
+                                                          const Cancellation* cancellation) {
+  Box_graph graph(partition, cancellation);
+  find_witnesses(graph, sites, active, partition, cancellation);
 
   tbb::enumerable_thread_specific<Flood> floods(partition.id_count());
   tbb::parallel_for(std::size_t{0}, active.size(), [&](std::size_t k) {
+    throw_if_cancelled(cancellation);
     flood(floods.local(), graph, sites, partition, active[k], slack);
   });
   std::vector<std::size_t> count(partition.id_count(), 0);
@@ -150,6 +154,7 @@ std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site
   for (std::size_t b = 0; b < candidates.size(); ++b) candidates[b].reserve(count[b]);
   for (const Flood& f : floods)
     for (const auto& [b, s] : f.entered) candidates[b].push_back(s);
+  throw_if_cancelled(cancellation);
   // The same lists for every thread count.
   for (auto& list : candidates) std::sort(list.begin(), list.end());
   return candidates;

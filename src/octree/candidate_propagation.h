@@ -15,14 +15,18 @@
 
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "octree/seed_partition.h"
 
 namespace apollonius {
 
 // candidates[id] for every box identifier of the partition (empty for unused identifiers). `slack`
 // multiplies the rounding-error slack of the filters: 1 certified, 0 on the floating path (kernels.h).
+// Checks cancellation (cancellation.h) every 4096 boxes of the graph, every 4096 events of pass 1, and
+// before each site's flood.
 std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
                                                           const std::vector<Site_index>& active,
-                                                          const Seed_partition& partition, double slack);
+                                                          const Seed_partition& partition, double slack,
+                                                          const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

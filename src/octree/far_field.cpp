@@ -174,7 +174,8 @@ class Far_field {
 
 template <class Kernel>
 Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
-                                       const std::array<double, 3>& origin, double radius, const Axis_box& root) {
+                                const std::array<double, 3>& origin, double radius, const Axis_box& root,
+                                const Cancellation* cancellation) {
   if (escaping.size() < 4) {
     Far_field_vertices none;
     if (escaping.size() >= 2) none.patch_sites.push_back(escaping);
@@ -204,6 +205,7 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   // point there), with its tie set among them.
   std::vector<std::vector<Found_vertex>> found(quadruples.size());
   tbb::parallel_for(std::size_t{0}, quadruples.size(), [&](std::size_t q) {
+    throw_if_cancelled(cancellation);
     const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
     decide_quadruples<Kernel>(sites, quadruple, escaping,
                               [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); },
@@ -226,8 +228,10 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
 }
 
 template Far_field_vertices far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
-                                                          const std::array<double, 3>&, double, const Axis_box&);
+                                                          const std::array<double, 3>&, double, const Axis_box&,
+                                                          const Cancellation*);
 template Far_field_vertices far_vertices<Floating_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
-                                                         const std::array<double, 3>&, double, const Axis_box&);
+                                                         const std::array<double, 3>&, double, const Axis_box&,
+                                                         const Cancellation*);
 
 }  // namespace apollonius

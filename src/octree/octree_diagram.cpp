@@ -56,7 +56,7 @@ template <class Kernel>
 Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_options& options) {
   Octree_statistics statistics;
   Lap_timer timer;
-  std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites);
+  std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites, options.cancellation);
   const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
   if (active.size() < 4) {
     if (options.regions != nullptr) {  // no box: every site escapes, and they are one set
@@ -64,7 +64,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       options.regions->escaping = active;
       if (active.size() >= 2) options.regions->far_sets.push_back(active);
     }
-    return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {});
+    return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {}, options.cancellation);
   }
   const int exponent = normalizing_exponent(input_sites, active);
   const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
@@ -80,7 +80,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     const std::vector<std::vector<Site_index>> candidates =
-        propagate_candidates(sites, active, partition, Kernel::filter_slack);
+        propagate_candidates(sites, active, partition, Kernel::filter_slack, options.cancellation);
     statistics.propagation_seconds = timer.lap();
 
     // The sites owning a point outside R own a point of its boundary, so they are candidates of the boxes
@@ -102,6 +102,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box());
     tbb::enumerable_thread_specific<std::vector<Octree_regions::Box>> regions;
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
+      throw_if_cancelled(options.cancellation);
       Box_refinement<Kernel>& local = refinement.local();
       if (options.regions != nullptr) local.record_regions(&regions.local());
       local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
@@ -128,7 +129,8 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       statistics.distinct_quadruples += counts.distinct_quadruples;
     }
     statistics.refinement_seconds = timer.lap();
-    Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box());
+    Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(),
+                                                  partition.root_box(), options.cancellation);
     vertices = std::move(far.vertices);
     if (options.regions != nullptr) {
       options.regions->escaping = escaping;
@@ -148,7 +150,8 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
     if (options.regions != nullptr) unscale_regions(*options.regions, exponent);
   }
-  Diagram diagram = assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices));
+  Diagram diagram =
+      assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices), options.cancellation);
   statistics.assembly_seconds = timer.lap();
   if (options.statistics) *options.statistics = statistics;
   return diagram;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "predicates/axis_box.h"
+#include "diagram/cancellation.h"
 #include "diagram/diagram.h"
 
 namespace apollonius {
@@ -58,6 +59,10 @@ struct Octree_options {
   Octree_statistics* statistics = nullptr;  // filled in when not null
   Arithmetic arithmetic = Arithmetic::certified;
   Octree_regions* regions = nullptr;  // filled in when not null
+  // When given, another thread may request it: the computation then throws Cancelled within a small
+  // fraction of a second (cancellation.h says where it checks) and returns nothing. The output of a
+  // computation that is not cancelled is the same as without it.
+  const Cancellation* cancellation = nullptr;
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

@@ -254,6 +254,63 @@ TEST_CASE("structures: hydrogens and waters left out unless kept; one conformer;
   CHECK(read_text(small_pdb, options).sites == std::vector<Site>{n, ca, cb, selenium, water});
 }
 
+TEST_CASE("atom labels: one per site when asked for, in the order of the sites") {
+  Read_options options;
+  CHECK(read_text(small_pdb, options).labels.empty());
+  options.atom_labels = true;
+  options.keep_hydrogens = true;
+  const Site_input input = read_text(small_pdb, options);
+  REQUIRE(input.labels.size() == input.sites.size());
+  REQUIRE(input.labels.size() == 5);  // N CA CB(A) H SE
+  const Atom_label& ca = input.labels[1];
+  CHECK(ca.chain == "A");
+  CHECK(ca.residue_name == "ALA");
+  CHECK(ca.residue_number == 1);
+  CHECK(ca.insertion_code == ' ');
+  CHECK(ca.atom_name == "CA");
+  CHECK(ca.element == "C");
+  CHECK(ca.alternate_location == ' ');
+  CHECK(ca.serial == 2);
+  CHECK(input.labels[2].atom_name == "CB");
+  CHECK(input.labels[2].alternate_location == 'A');
+  CHECK(input.labels[3].element == "H");
+  const Atom_label& selenium = input.labels[4];
+  CHECK(selenium.residue_name == "SE");
+  CHECK(selenium.residue_number == 101);
+  CHECK(selenium.element == "Se");
+  CHECK(selenium.serial == 6);
+
+  Temporary_directory directory;
+  const Site_input cif = read_sites(directory.write("small.cif", small_mmcif), options);
+  REQUIRE(cif.labels.size() == 2);
+  CHECK(cif.labels[0].chain == "E");
+  CHECK(cif.labels[0].residue_name == "ASP");
+  CHECK(cif.labels[0].atom_name == "N");
+  CHECK(cif.labels[1].serial == 2);
+  const Site_input pept = read_sites(APOLLONIUS_EXAMPLES "/pept.pdb", options);
+  CHECK(pept.labels.size() == pept.sites.size());
+  CHECK(read_sites(APOLLONIUS_TEST_DATA "/pept.balls", options).labels.empty());
+}
+
+TEST_CASE("sites from arrays: checked as files are") {
+  const double centres[] = {0, 1, 2, 3, 4, 5};
+  const double weights[] = {0.5, -1};
+  CHECK(sites_from_arrays(centres, weights, 2) == std::vector<Site>{{0, 1, 2, 0.5}, {3, 4, 5, -1}});
+  check_input_error([&] { sites_from_arrays(centres, weights, 0); }, "centres", 0, "empty input: no sites");
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double bad_centres[] = {0, 1, 2, 3, 4, nan};
+  check_input_error([&] { sites_from_arrays(bad_centres, weights, 2); }, "centres", 0,
+                    "site 1, z: not a finite number: nan");
+  const double bad_weights[] = {0.5, -inf};
+  check_input_error([&] { sites_from_arrays(centres, bad_weights, 2); }, "weights", 0,
+                    "site 1: not a finite number: -inf");
+  try {
+    sites_from_arrays(bad_centres, weights, 2);
+  } catch (const Input_error& e) {
+    CHECK(std::string(e.what()) == "centres: site 1, z: not a finite number: nan");
+  }
+}
+
 TEST_CASE("standard input is read for \"-\" and named <stdin>") {
   std::istringstream fake_stdin("1 2 3 4\n0 0 0\n");
   struct Restore_stdin {

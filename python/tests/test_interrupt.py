@@ -1,0 +1,63 @@
+"""Ctrl-C: SIGINT stops a long computation within a second with KeyboardInterrupt, and leaves nothing
+half done. Each run is a child process, so that the signal cannot reach the test session."""
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from conftest import REPOSITORY
+
+# The child: a protein tiled 2 x 2 x 2 (39,392 atoms: several seconds, 350 MB), interrupted; then a small
+# computation, which must equal the one made before. (Not 8 in a row: the far field of so long a set
+# takes tens of GB today.)
+CHILD = r"""
+import sys, time
+import numpy as np
+import apollonius3d
+
+compute = getattr(apollonius3d, sys.argv[4])  # vertices or diagram
+threads = int(sys.argv[1])
+protein = apollonius3d.read_sites(sys.argv[2])
+shifts = [[100.0 * i, 100.0 * j, 100.0 * k] for i in range(2) for j in range(2) for k in range(2)]
+centres = np.concatenate([protein.centres + shift for shift in shifts])
+weights = np.tile(protein.weights, 8)
+small = apollonius3d.read_sites(sys.argv[3])
+before = apollonius3d.vertices(*small)
+print("started", flush=True)
+start = time.monotonic()
+try:
+    compute(centres, weights, threads=threads)
+    print("finished", time.monotonic() - start, flush=True)
+except KeyboardInterrupt:
+    print("interrupted", time.monotonic(), flush=True)
+after = apollonius3d.vertices(*small, threads=threads)
+same = (np.array_equal(before.points, after.points) and np.array_equal(before.tie_sets.sites, after.tie_sets.sites))
+print("same" if same else "different", flush=True)
+"""
+
+
+# diagram() is interrupted while it computes the vertices (its edges and faces are not interruptible).
+@pytest.mark.parametrize("function,threads,delay", [("vertices", 1, 0.1), ("vertices", 1, 0.5), ("vertices", 1, 1.5),
+                                                    ("vertices", 2, 0.3), ("vertices", 2, 2.0), ("diagram", 1, 0.5),
+                                                    ("diagram", 2, 1.5)])
+def test_ctrl_c_stops_a_long_computation_within_a_second(function, threads, delay):
+    child = subprocess.Popen(
+        [sys.executable, "-c", CHILD, str(threads), str(REPOSITORY / "bench" / "data" / "pdb" / "1j3h.pdb"),
+         str(REPOSITORY / "examples" / "pept.pdb"), function], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline() == "started\n", child.stderr.read()
+        time.sleep(delay)
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        outcome = child.stdout.readline().split()
+        assert outcome and outcome[0] == "interrupted", f"{outcome}: the signal came after the end (too fast a machine?)"
+        latency = float(outcome[1]) - sent
+        print(f"{function}, threads {threads}, signal after {delay} s: KeyboardInterrupt {latency:.3f} s after it")
+        assert latency < 1.0
+        assert child.stdout.readline() == "same\n"  # the module works as before
+        assert child.wait(timeout=60) == 0
+    finally:
+        child.kill()
+        child.wait()

@@ -1,0 +1,109 @@
+// Cancellation (diagram/cancellation.h): a requested cancellation stops every phase of octree_diagram with
+// Cancelled, whenever it comes, and leaves nothing half done (the next computation is whole); one that is
+// never requested changes no output.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "diagram/cancellation.h"
+#include "diagram/site_set.h"
+#include "octree/candidate_propagation.h"
+#include "octree/far_field.h"
+#include "octree/octree_diagram.h"
+#include "octree/seed_partition.h"
+#include "predicates/kernels.h"
+#include "reference/site_generators.h"
+
+using namespace apollonius;
+
+namespace {
+
+void check_same(const Diagram& a, const Diagram& b) {
+  REQUIRE(a.vertices.size() == b.vertices.size());
+  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
+    CAPTURE(i);
+    CHECK(a.vertices[i].tie_set == b.vertices[i].tie_set);
+    CHECK(a.vertices[i].rounded == b.vertices[i].rounded);
+  }
+  REQUIRE(a.hidden.size() == b.hidden.size());
+  for (std::size_t i = 0; i < a.hidden.size(); ++i) {
+    CHECK(a.hidden[i].site == b.hidden[i].site);
+    CHECK(a.hidden[i].hidden_by == b.hidden[i].hidden_by);
+    CHECK(a.hidden[i].duplicate == b.hidden[i].duplicate);
+  }
+  CHECK(a.sites_without_vertex == b.sites_without_vertex);
+}
+
+Octree_options with(const Cancellation* cancellation, int threads = 1) {
+  Octree_options options;
+  options.threads = threads;
+  options.cancellation = cancellation;
+  return options;
+}
+
+}  // namespace
+
+TEST_CASE("a cancellation that is never requested changes nothing") {
+  for (const Site_family_description& f : kSiteFamilies) {
+    for (int threads : {1, 2}) {
+      CAPTURE(f.name);
+      CAPTURE(threads);
+      const std::vector<Site> sites = generate_sites(f.family, 60, 7);
+      const Cancellation never;
+      check_same(octree_diagram(sites, with(&never, threads)), octree_diagram(sites, with(nullptr, threads)));
+    }
+  }
+}
+
+TEST_CASE("a cancellation requested before the call stops it, and every phase checks it") {
+  const std::vector<Site> sites = generate_sites(Site_family::uniform, 500, 3);
+  Cancellation cancellation;
+  cancellation.request();
+  CHECK_THROWS_AS(octree_diagram(sites, with(&cancellation)), Cancelled);
+  CHECK_THROWS_AS(octree_diagram(sites, with(&cancellation, 2)), Cancelled);
+  CHECK_THROWS_AS(classify_hidden_sites<Certified_kernel>(sites, &cancellation), Cancelled);
+
+  std::vector<Site_index> all(sites.size());
+  for (Site_index i = 0; i < all.size(); ++i) all[i] = i;
+  const Seed_partition partition(sites, all, 32);
+  CHECK_THROWS_AS(propagate_candidates(sites, all, partition, 1, &cancellation), Cancelled);
+  CHECK_THROWS_AS(far_vertices<Certified_kernel>(sites, all, partition.origin(), partition.root_radius(),
+                                                 partition.root_box(), &cancellation),
+                  Cancelled);
+  // Assembly, on the vertices of a small diagram.
+  const Diagram small = octree_diagram(generate_sites(Site_family::uniform, 10, 1));
+  REQUIRE_FALSE(small.vertices.empty());
+  std::vector<std::pair<std::vector<Site_index>, Vertex>> found;
+  for (const Diagram_vertex& v : small.vertices) found.emplace_back(v.tie_set, v.vertex);
+  CHECK_THROWS_AS(assemble_diagram<Certified_kernel>(10, {}, found, &cancellation), Cancelled);
+  CHECK(assemble_diagram<Certified_kernel>(10, {}, found, nullptr).vertices.size() == small.vertices.size());
+}
+
+TEST_CASE("a cancellation requested during the computation gives Cancelled or the whole answer") {
+  const std::vector<Site> sites = generate_sites(Site_family::uniform, 3000, 11);
+  const Diagram reference = octree_diagram(sites);
+  for (int threads : {1, 2}) {
+    int cancelled = 0;
+    for (int delay_ms : {0, 2, 10, 30, 60, 120, 250, 500, 1000, 4000}) {
+      CAPTURE(threads);
+      CAPTURE(delay_ms);
+      Cancellation cancellation;
+      std::thread requester([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+        cancellation.request();
+      });
+      try {
+        check_same(octree_diagram(sites, with(&cancellation, threads)), reference);
+      } catch (const Cancelled&) {
+        ++cancelled;
+        // Nothing of the cancelled run is left behind: the next one is whole.
+        check_same(octree_diagram(sites, with(nullptr, threads)), reference);
+      }
+      requester.join();
+      // Requested at once, long before a run of 3000 sites ends.
+      if (delay_ms == 0) CHECK(cancelled == 1);
+    }
+    MESSAGE("threads " << threads << ": " << cancelled << " of 10 runs cancelled");
+  }
+}
