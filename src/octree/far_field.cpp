@@ -9,6 +9,7 @@
 
 #include "predicates/kernels.h"
 #include "octree/leaf_decision.h"
+#include "octree/lift_span.h"
 
 namespace apollonius {
 namespace {
@@ -156,6 +157,25 @@ class Far_field {
   // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
   // of one of their quadruples (sorted; kept is ascending).
   void record_quadruples(const std::vector<Site_index>& kept) {
+    // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
+    // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
+    // Spanning a 3-space and all tied at one point v (balls on a circle and one more ball, along the
+    // circle's axis), every quadruple of them with roots has the same line through (v, r) and the same
+    // polynomial on it: the heaviest basis gives every valid root (lift_span.h). The check costs k
+    // conflict tests once per kept set.
+    std::array<Site_index, 4> basis;
+    const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
+    if (dimension <= 2) return;
+    if (dimension == 3 && kept.size() > 4) {
+      if (kept != last_kept_) {
+        last_kept_ = kept;
+        last_tied_at_point_ = tied_at_one_point(kept, basis);
+      }
+      if (last_tied_at_point_) {
+        quadruples_.push_back(basis);
+        return;
+      }
+    }
     const std::size_t k = kept.size();
     for (std::size_t a = 0; a < k; ++a)
       for (std::size_t b = a + 1; b < k; ++b)
@@ -163,7 +183,19 @@ class Far_field {
           for (std::size_t d = c + 1; d < k; ++d) quadruples_.push_back({kept[a], kept[b], kept[c], kept[d]});
   }
 
+  // Whether every site of `kept` ties at one root of the quadruple `basis` of them.
+  bool tied_at_one_point(const std::vector<Site_index>& kept, const std::array<Site_index, 4>& basis) const {
+    for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)).vertices)
+      if (std::all_of(kept.begin(), kept.end(), [&](Site_index s) {
+            return std::find(basis.begin(), basis.end(), s) != basis.end() || Kernel::conflict(v, sites_[s]) == Sign::ZERO;
+          }))
+        return true;
+    return false;
+  }
+
   const std::vector<Site>& sites_;
+  std::vector<Site_index> last_kept_;  // the last set record_quadruples tested, and the outcome
+  bool last_tied_at_point_ = false;
   std::array<double, 3> origin_;
   double radius_;
   std::vector<Quadruple_key> quadruples_;
