@@ -159,19 +159,20 @@ class Far_field {
   void record_quadruples(const std::vector<Site_index>& kept) {
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
     // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
-    // Spanning a 3-space and all tied at one point v (balls on a circle and one more ball, along the
-    // circle's axis), every quadruple of them with roots has the same line through (v, r) and the same
-    // polynomial on it: the heaviest basis gives every valid root (lift_span.h). The check costs k
-    // conflict tests once per kept set.
+    // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
+    // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
+    // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
+    // per kept set.
     std::array<Site_index, 4> basis;
     const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
     if (dimension <= 2) return;
     if (dimension == 3 && kept.size() > 4) {
       if (kept != last_kept_) {
         last_kept_ = kept;
-        last_tied_at_point_ = tied_at_one_point(kept, basis);
+        const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
+        last_on_one_line_ = std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); });
       }
-      if (last_tied_at_point_) {
+      if (last_on_one_line_) {
         quadruples_.push_back(basis);
         return;
       }
@@ -183,19 +184,9 @@ class Far_field {
           for (std::size_t d = c + 1; d < k; ++d) quadruples_.push_back({kept[a], kept[b], kept[c], kept[d]});
   }
 
-  // Whether every site of `kept` ties at one root of the quadruple `basis` of them.
-  bool tied_at_one_point(const std::vector<Site_index>& kept, const std::array<Site_index, 4>& basis) const {
-    for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)).vertices)
-      if (std::all_of(kept.begin(), kept.end(), [&](Site_index s) {
-            return std::find(basis.begin(), basis.end(), s) != basis.end() || Kernel::conflict(v, sites_[s]) == Sign::ZERO;
-          }))
-        return true;
-    return false;
-  }
-
   const std::vector<Site>& sites_;
   std::vector<Site_index> last_kept_;  // the last set record_quadruples tested, and the outcome
-  bool last_tied_at_point_ = false;
+  bool last_on_one_line_ = false;
   std::array<double, 3> origin_;
   double radius_;
   std::vector<Quadruple_key> quadruples_;
