@@ -12,6 +12,8 @@
 #include "predicates/axis_box.h"
 #include "predicates/compare_vertices.h"
 #include "predicates/is_hidden.h"
+#include "predicates/lift_outside_span.h"
+#include "predicates/power_lift_outside_span.h"
 #include "predicates/vertex_conflict.h"
 #include "predicates/vertex_in_box.h"
 #include "predicates/vertex_rounding.h"
@@ -32,6 +34,8 @@ struct Certified_kernel {
   }
   static Sign conflict(const Vertex& v, const Site& s) { return vertex_conflict(v, s); }
   static Sign compare(const Vertex& u, const Vertex& v) { return compare_vertices(u, v); }
+  static bool outside_lift_span(const Lift_basis& basis, const Site& s) { return lift_outside_span(basis, s); }
+  static bool outside_power_lift_span(const std::array<Site, 4>& basis, const Site& s) { return power_lift_outside_span(basis, s); }
   static bool hidden(const Site& i, Site_index index_i, const Site& j, Site_index index_j) {
     return is_hidden(i, index_i, j, index_j);
   }
@@ -53,6 +57,10 @@ struct Floating_kernel {
   }
   static Sign conflict(const Vertex& v, const Site& s) { return vertex_conflict.floating(v, s); }
   static Sign compare(const Vertex& u, const Vertex& v) { return compare_vertices.floating(u, v); }
+  static bool outside_lift_span(const Lift_basis& basis, const Site& s) { return lift_outside_span.floating(basis, s); }
+  static bool outside_power_lift_span(const std::array<Site, 4>& basis, const Site& s) {
+    return power_lift_outside_span.floating(basis, s);
+  }
   static bool hidden(const Site& i, Site_index index_i, const Site& j, Site_index index_j) {
     return is_hidden.floating(i, index_i, j, index_j);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "octree/lift_span.h"
 #include "predicates/box_distance.h"
 #include "predicates/kernels.h"
 #include "predicates/rounding_guard.h"
@@ -24,7 +25,19 @@ constexpr std::size_t kWitnesses = 4;
 // separates, where enumerating their quadruples would not end. kMaxDepth only bounds the recursion: the
 // doubles span 2098 binades, so split() fails first, and a seed box 2^900 times larger than a cluster of
 // sites inside it (sites spread over many orders of magnitude) still refines down to the cluster.
+//
+// A tiny box of more candidates that did not drop from its parent's is settled if they cannot be separated
+// for a reason decided exactly (classify_tie): their lifts span at most a plane (sites tied along a curve,
+// such as equal balls on one circle along its axis: no vertex), or every one of them ties at one point v
+// (balls tangent to one sphere: a tie-point leaf, decided from the star about v). Termination: a box
+// whose closure holds v keeps every site tied there, so it settles once tiny, log2(box size / distance to
+// the centres) + 7 levels down, for any number of tied sites, instead of descending to the last binade
+// (1,075 levels about v = 0). Along a curve of ties the same holds for the boxes that touch it.
 constexpr int kStagnationLevels = 4;
+// classify_tie is tried on a tiny box whose candidates did not drop from its parent's. Not waiting for
+// kStagnationLevels matters along a curve of ties near a tie point, where the candidates drop by one
+// every few levels (second-order separation) and the boxes along the curve double at every level.
+constexpr int kStagnationToClassify = 1;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 2200;
@@ -60,6 +73,24 @@ Children split(const Axis_box& box) {
     if (valid) children.box[children.count++] = child;
   }
   return children;
+}
+
+// Whether two vertices certainly differ: their interval enclosures are disjoint.
+bool certainly_apart(const Vertex& u, const Vertex& v) {
+  const std::array<Interval, 4> a = u.point_interval(), b = v.point_interval();
+  for (int j = 0; j < 4; ++j)
+    if (a[j].sup() < b[j].inf() || b[j].sup() < a[j].inf()) return true;
+  return false;
+}
+
+// The index among `roots` of the root equal to u, given that u is a root whenever the roots are discrete
+// (none when they are not); the intervals tell most apart, compare the rest.
+template <class Kernel>
+std::size_t root_equal_to(const Vertex& u, const Quadruple_vertices& roots) {
+  if (roots.vertices.size() <= 1) return 0;
+  if (certainly_apart(roots.vertices[0], u)) return 1;
+  if (certainly_apart(roots.vertices[1], u)) return 0;
+  return Kernel::compare(roots.vertices[0], u) == Sign::ZERO ? 0 : 1;
 }
 
 }  // namespace
@@ -103,6 +134,15 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
                          (stagnant >= kStagnationLevels && kept <= kStagnantCandidates &&
                           tiny_against_candidates(box, end));
+    if (!settled && kept > kLeafCandidates && stagnant >= kStagnationToClassify && tiny_against_candidates(box, end)) {
+      const Tie tie = classify_tie(end);
+      if (tie != Tie::none) {
+        record();
+        if (tie == Tie::at_point) decide_tie_point_leaf(box, end, out);
+        stack_.resize(end);
+        return;
+      }
+    }
     const Children children = settled ? Children{} : split(box);
     if (children.count == 0) {
       record();
@@ -217,6 +257,93 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
             keep_located(Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
           else
             keep_located(cache_.vertices_of_quadruple(quadruple, sites_));
+        }
+}
+
+// Tried on a tiny box of more than kLeafCandidates candidates K that did not drop. The lifts' span is
+// grown over K by descending weight (early exit at five sites: O(k) lift_outside_span calls only when K
+// is degenerate), after an O(k log k) sort. A
+// span of dimension 3 or more gives four sites whose quadruple has at most two roots; if K ties at one
+// point, it is one of them (equidistant from the four, with r + w >= 0), and its k - 4 conflict tests
+// confirm it. A point found before is reused while K stays among its tie set.
+template <class Kernel>
+typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::size_t first) {
+  const auto kept = stack_.begin() + static_cast<std::ptrdiff_t>(first);
+  if (!tie_point_.empty() && std::all_of(kept, stack_.end(), [&](Site_index s) {
+        return std::binary_search(tied_at_point_.begin(), tied_at_point_.end(), s);
+      }))
+    return Tie::at_point;
+  std::array<Site_index, 4> basis;
+  if (heaviest_lift_basis<Kernel>(sites_, kept, stack_.end(), basis) <= 2) return Tie::vertex_free;
+  const Quadruple_vertices roots = Kernel::vertices_of_quadruple(make_quadruple(basis, sites_));
+  for (const Vertex& v : roots.vertices) {
+    const bool all_tie = std::all_of(kept, stack_.end(), [&](Site_index s) {
+      return std::binary_search(basis.begin(), basis.end(), s) || Kernel::conflict(v, sites_[s]) == Sign::ZERO;
+    });
+    if (!all_tie) continue;
+    tie_point_.assign(1, v);
+    tied_at_point_.assign(kept, stack_.end());
+    std::sort(tied_at_point_.begin(), tied_at_point_.end());
+    return Tie::at_point;
+  }
+  return Tie::none;
+}
+
+// Every candidate ties at v = tie_point_, so every quadruple of them with a discrete set of roots has v as
+// a root: v is decided once (its tie set is K: a site outside K owns no point of the closed box), and of
+// each quadruple only the other root is located. Which quadruples: if the lifts of K span a 3-space, every
+// such quadruple has the same line through (v, r) and the same polynomial on it (tie_point_star.h), so the
+// heaviest basis gives the only other point that is a valid root of any of them (lift_span.h); otherwise
+// the star about v picks the quadruples near the box, O(k) in general position. Only if the star gives up
+// are all C(k, 4) quadruples enumerated, streamed.
+template <class Kernel>
+void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
+  const std::size_t k = stack_.size() - first, leaf_start = out.size();
+  ++counts_.leaves;
+  counts_.leaf_candidates += k;
+  const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
+  std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
+  const Site_index* leaf = stack_.data() + first;
+  const Vertex& tie_point = tie_point_.front();
+
+  std::array<Site_index, 4> basis;
+  const int dimension = heaviest_lift_basis<Kernel>(sites_, leaf, leaf + k, basis);
+  if (dimension <= 2) return;  // no quadruple of K has a discrete set of roots
+  if (Kernel::in_box(tie_point, box, closed_above)) append_unique<Kernel>(out, leaf_start, {std::vector<Site_index>(leaf, leaf + k), tie_point});
+
+  const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
+    const std::size_t known = root_equal_to<Kernel>(tie_point, roots);
+    for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
+      const Vertex& v = roots.vertices[r];
+      if (r == known || !Kernel::in_box(v, box, closed_above)) continue;
+      tie_.assign(quadruple.begin(), quadruple.end());
+      bool closer = false;
+      for (std::size_t o = 0; o < k && !closer; ++o) {
+        if (std::find(quadruple.begin(), quadruple.end(), leaf[o]) != quadruple.end()) continue;
+        const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
+        closer = sign == Sign::NEGATIVE;
+        if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
+      }
+      if (closer) continue;
+      std::sort(tie_.begin(), tie_.end());
+      append_unique<Kernel>(out, leaf_start, {tie_, v});
+    }
+  };
+  if (dimension == 3) {
+    decide(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)));
+    return;
+  }
+  if (star_.quadruples_near(tie_point, box, leaf, k, near_quadruples_)) {
+    for (const std::array<Site_index, 4>& quadruple : near_quadruples_)
+      decide(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
+    return;
+  }
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = a + 1; b < k; ++b)
+      for (std::size_t c = b + 1; c < k; ++c)
+        for (std::size_t d = c + 1; d < k; ++d) {
+          const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
+          decide(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
         }
 }
 

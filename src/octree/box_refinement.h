@@ -9,9 +9,10 @@
 // candidates; a leaf of up to six (fifteen quadruples, mostly cached) costs less than the levels of
 // refinement that separating the fifth and sixth would take.
 //
-// Degenerate input (five or more sites tangent to one sphere, lattices) can keep more candidates in
-// arbitrarily small boxes; such a box becomes a leaf once refining stops helping. No vertex is dropped:
-// every leaf is decided exactly.
+// Degenerate input (five or more sites tangent to one sphere, lattices, balls on a circle) can keep more
+// candidates in arbitrarily small boxes; such a box becomes a leaf once refining stops helping. No vertex is
+// dropped: every leaf is decided exactly. A stagnant box of more than a dozen candidates is settled only if
+// they tie along a curve (their lifts span a plane: no vertex) or at one point (a tie-point leaf).
 #pragma once
 
 #include <vector>
@@ -21,6 +22,7 @@
 #include "octree/leaf_decision.h"
 #include "octree/octree_diagram.h"
 #include "octree/quadruple_cache.h"
+#include "octree/tie_point_star.h"
 
 namespace apollonius {
 
@@ -34,7 +36,7 @@ template <class Kernel>
 class Box_refinement {
  public:
   // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
-  Box_refinement(const std::vector<Site>& sites, const Axis_box& root) : sites_(sites), root_(root) {}
+  Box_refinement(const std::vector<Site>& sites, const Axis_box& root) : sites_(sites), root_(root), star_(sites) {}
 
   // Appends every vertex located in the box (half-open, closed on the root's upper faces), with its tie set.
   // Precondition: `candidates` contains every site that owns a point of the closed box.
@@ -52,6 +54,11 @@ class Box_refinement {
   void keep_undominated(const Axis_box& box, std::size_t first, std::size_t end);
   bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
+  // For a stagnant box of many candidates: whether their lifts span at most a plane (`vertex_free`), or
+  // all of them tie at one point, which tie_point_ then holds.
+  enum class Tie { none, vertex_free, at_point };
+  Tie classify_tie(std::size_t first);
+  void decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
 
   const std::vector<Site>& sites_;
   Axis_box root_;
@@ -61,6 +68,11 @@ class Box_refinement {
   Quadruple_cache<Kernel> cache_;
   Refinement_counts counts_;
   std::vector<Octree_regions::Box>* regions_ = nullptr;
+  // The last point found by classify_tie, with every site known to tie there (ascending).
+  std::vector<Vertex> tie_point_;  // empty or one
+  std::vector<Site_index> tied_at_point_;
+  Tie_point_star<Kernel> star_;
+  std::vector<std::array<Site_index, 4>> near_quadruples_;
 };
 
 }  // namespace apollonius

@@ -9,6 +9,7 @@
 
 #include "predicates/kernels.h"
 #include "octree/leaf_decision.h"
+#include "octree/lift_span.h"
 
 namespace apollonius {
 namespace {
@@ -156,6 +157,26 @@ class Far_field {
   // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
   // of one of their quadruples (sorted; kept is ascending).
   void record_quadruples(const std::vector<Site_index>& kept) {
+    // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
+    // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
+    // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
+    // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
+    // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
+    // per kept set.
+    std::array<Site_index, 4> basis;
+    const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
+    if (dimension <= 2) return;
+    if (dimension == 3 && kept.size() > 4) {
+      if (kept != last_kept_) {
+        last_kept_ = kept;
+        const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
+        last_on_one_line_ = std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); });
+      }
+      if (last_on_one_line_) {
+        quadruples_.push_back(basis);
+        return;
+      }
+    }
     const std::size_t k = kept.size();
     for (std::size_t a = 0; a < k; ++a)
       for (std::size_t b = a + 1; b < k; ++b)
@@ -164,6 +185,8 @@ class Far_field {
   }
 
   const std::vector<Site>& sites_;
+  std::vector<Site_index> last_kept_;  // the last set record_quadruples tested, and the outcome
+  bool last_on_one_line_ = false;
   std::array<double, 3> origin_;
   double radius_;
   std::vector<Quadruple_key> quadruples_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 
@@ -33,13 +34,198 @@ constexpr bool lists_every_family_in_enum_order() {
   std::size_t i = 0;
   for (const Site_family_description& d : kSiteFamilies)
     if (static_cast<std::size_t>(d.family) != i++) return false;
-  return i == static_cast<std::size_t>(Site_family::wide_range) + 1;
+  return i == static_cast<std::size_t>(Site_family::circle_mixed) + 1;
 }
 static_assert(lists_every_family_in_enum_order());
 
 Site random_site(Random& random, long extent, double min_weight, double max_weight) {
   return {random.eighths(-extent, extent), random.eighths(-extent, extent), random.eighths(-extent, extent),
           static_cast<double>(random.integer(static_cast<long>(8 * min_weight), static_cast<long>(8 * max_weight))) / 8.0};
+}
+
+
+// An integer vector and its integer length.
+struct Integer_point {
+  long long x, y, z, norm;
+};
+
+// (a^2 + b^2 - c^2 - d^2, 2(ad + bc), 2(bd - ac)) has the integer length a^2 + b^2 + c^2 + d^2 (Euler's
+// four-square identity); every primitive Pythagorean quadruple is of this form.
+Integer_point pythagorean_quadruple(long long a, long long b, long long c, long long d) {
+  return {a * a + b * b - c * c - d * d, 2 * (a * d + b * c), 2 * (b * d - a * c), a * a + b * b + c * c + d * d};
+}
+
+Integer_point divided_by_gcd(Integer_point p) {
+  const long long g = std::gcd(std::gcd(p.x, p.y), p.z);
+  return g == 0 ? p : Integer_point{p.x / g, p.y / g, p.z / g, p.norm / g};
+}
+
+// x, y, z in a random order of the axes (one of six permutations).
+std::array<long long, 3> permuted(const std::array<long long, 3>& v, long permutation) {
+  static constexpr int kAxes[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  return {v[kAxes[permutation][0]], v[kAxes[permutation][1]], v[kAxes[permutation][2]]};
+}
+
+Site site_at(const std::array<long, 3>& origin, const std::array<long long, 3>& offset, double w) {
+  return {static_cast<double>(origin[0] + offset[0]), static_cast<double>(origin[1] + offset[1]),
+          static_cast<double>(origin[2] + offset[2]), w};
+}
+
+std::array<long, 3> small_integer_point(Random& random) {
+  return {random.integer(-3, 3), random.integer(-3, 3), random.integer(-3, 3)};
+}
+
+// Balls at integer points O + p with |p| an integer, weight |p| - R: every ball touches the sphere of
+// radius R about O (from outside, or from inside for a negative weight), so all of them tie at O. One ball
+// per ray from O, so none hides another. `planar`: the centres lie in a plane through O (Pythagorean triples
+// (a^2 - b^2, 2ab)), all tangent to one circle of that plane. The range of a, b, c, d grows when new rays
+// get rare, so any n is reached.
+std::vector<Site> tangent_to_one_sphere(std::size_t n, Random& random, bool planar) {
+  const std::array<long, 3> origin = small_integer_point(random);
+  const long radius = random.integer(1, 3);
+  const long permutation = random.integer(0, 5);
+  std::set<std::array<long long, 3>> rays;
+  std::vector<Site> sites;
+  long bound = 2;
+  std::size_t misses = 0;
+  while (sites.size() < n) {
+    const long long a = random.integer(-bound, bound), b = random.integer(-bound, bound);
+    Integer_point p;
+    if (planar) {
+      p = {a * a - b * b, 2 * a * b, 0, a * a + b * b};
+      if (random.integer(0, 1)) std::swap(p.x, p.y);
+    } else {
+      p = pythagorean_quadruple(a, b, random.integer(-bound, bound), random.integer(-bound, bound));
+    }
+    p = divided_by_gcd(p);
+    if (p.norm == 0 || !rays.insert({p.x, p.y, p.z}).second) {
+      if (++misses > 8 * (sites.size() + 8)) ++bound, misses = 0;
+      continue;
+    }
+    sites.push_back(site_at(origin, permuted({p.x, p.y, p.z}, permutation), static_cast<double>(p.norm - radius)));
+  }
+  return sites;
+}
+
+// Balls tangent to the two spheres of radius R about O and O + (0, 0, 4k): centres O + (x, y, 2k) with
+// x^2 + y^2 + 4k^2 = N^2, weight N - R, so all of them tie at both sphere centres. Such points are the
+// quadruples above with bd - ac = k: a and c at random, b a divisor of k + ac.
+std::vector<Site> tangent_to_two_spheres(std::size_t n, Random& random) {
+  const std::array<long, 3> origin = small_integer_point(random);
+  const long radius = random.integer(1, 3), k = random.integer(1, 2), permutation = random.integer(0, 5);
+  std::set<std::pair<long long, long long>> used;
+  std::vector<Site> sites;
+  long bound = 2;
+  std::size_t misses = 0;
+  while (sites.size() < n) {
+    const long long a = random.integer(-bound, bound), c = random.integer(-bound, bound), t = k + a * c;
+    long long b = 0, d = random.integer(-bound, bound);
+    if (t != 0) {
+      std::vector<long long> divisors;
+      for (long long q = 1; q * q <= std::abs(t); ++q)
+        if (t % q == 0) divisors.insert(divisors.end(), {q, -q, t / q, -t / q});
+      b = divisors[static_cast<std::size_t>(random.integer(0, static_cast<long>(divisors.size()) - 1))];
+      d = t / b;
+    }
+    const Integer_point p = pythagorean_quadruple(a, b, c, d);  // p.z == 2k
+    if (!used.insert({p.x, p.y}).second) {
+      if (++misses > 8 * (sites.size() + 8)) ++bound, misses = 0;
+      continue;
+    }
+    sites.push_back(site_at(origin, permuted({p.x, p.y, p.z}, permutation), static_cast<double>(p.norm - radius)));
+  }
+  return sites;
+}
+
+// The integer points of the sphere of radius r about the origin.
+std::vector<std::array<long long, 3>> integer_points_on_sphere(long long r) {
+  std::vector<std::array<long long, 3>> points;
+  for (long long x = -r; x <= r; ++x)
+    for (long long y = -r; y <= r; ++y) {
+      const long long rest = r * r - x * x - y * y;
+      if (rest < 0) continue;
+      const long long z = static_cast<long long>(std::llround(std::sqrt(static_cast<double>(rest))));
+      if (z * z != rest) continue;
+      points.push_back({x, y, z});
+      if (z != 0) points.push_back({x, y, -z});
+    }
+  return points;
+}
+
+// Two to four shells of integer points about O, each on a sphere of integer radius r_j with one weight
+// r_j - s_j, s_j 1 or 2: every shell is cospherical with equal weights, and shells of the same s_j also tie
+// at O (where a ball of an outer shell on the same ray hides the inner one).
+std::vector<Site> concentric_shells(std::size_t n, Random& random) {
+  const std::array<long, 3> origin = small_integer_point(random);
+  std::vector<Site> sites;
+  std::size_t shells = static_cast<std::size_t>(random.integer(2, 4));
+  long long r = random.integer(1, 3);
+  while (sites.size() < n) {
+    const std::size_t quota = (n - sites.size() + shells - 1) / shells;
+    std::vector<std::array<long long, 3>> points;
+    for (r += random.integer(1, 3);; ++r) {
+      points = integer_points_on_sphere(r);
+      if (points.size() >= quota) break;
+    }
+    const double w = static_cast<double>(r - random.integer(1, 2));
+    for (std::size_t k = 0; k < quota; ++k) {  // quota distinct points, by a partial shuffle
+      std::swap(points[k], points[k + static_cast<std::size_t>(random.integer(0, static_cast<long>(points.size() - k) - 1))]);
+      sites.push_back(site_at(origin, points[k], w));
+    }
+    if (shells > 1) --shells;
+  }
+  return sites;
+}
+
+// The integer points of the circle x^2 + y^2 = R^2, R a product of primes p = 1 mod 4: the Gaussian
+// integers of norm R^2, u * prod pi_p^e conj(pi_p)^(2 - e), with p = pi_p conj(pi_p), e = 0, 1, 2 and u a
+// unit: 4 * 3^k of them for k primes. Enough primes for `at_least` points, and at most nine (R about
+// 1.1e13, exact in doubles).
+std::vector<std::array<long long, 2>> integer_points_on_circle(std::size_t at_least, long long& radius) {
+  static constexpr long long kGaussianPrimes[9][2] = {{2, 1}, {3, 2}, {4, 1}, {5, 2}, {6, 1}, {5, 4}, {7, 2}, {6, 5}, {8, 3}};
+  std::vector<std::array<long long, 2>> points = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  radius = 1;
+  for (const auto& pi : kGaussianPrimes) {
+    if (points.size() >= at_least) break;
+    radius *= pi[0] * pi[0] + pi[1] * pi[1];
+    // pi^2, pi conj(pi) = p and conj(pi)^2.
+    const long long factors[3][2] = {{pi[0] * pi[0] - pi[1] * pi[1], 2 * pi[0] * pi[1]},
+                                     {pi[0] * pi[0] + pi[1] * pi[1], 0},
+                                     {pi[0] * pi[0] - pi[1] * pi[1], -2 * pi[0] * pi[1]}};
+    std::vector<std::array<long long, 2>> next;
+    for (const auto& z : points)
+      for (const auto& f : factors) next.push_back({z[0] * f[0] - z[1] * f[1], z[0] * f[1] + z[1] * f[0]});
+    points = std::move(next);
+  }
+  return points;
+}
+
+// n balls with centres on one circle about O (in a plane of two axes), of one weight (`mixed`: each of
+// three weights). The weights are multiples of 1/8 up to R. Without `mixed`, one ball in eight lies
+// elsewhere near the circle, so that vertices join the circle's axis, where all its balls tie. Beyond the
+// 78,732 points of the largest circle, points repeat (duplicate sites).
+std::vector<Site> on_one_circle(std::size_t n, Random& random, bool mixed) {
+  const std::array<long, 3> origin = small_integer_point(random);
+  long long radius = 0;
+  std::vector<std::array<long long, 2>> points = integer_points_on_circle(n + static_cast<std::size_t>(random.integer(0, 1)) * n, radius);
+  const long permutation = random.integer(0, 5);
+  const double weights[3] = {random.eighths(0, radius), random.eighths(0, radius), random.eighths(0, radius)};
+  std::vector<Site> sites;
+  for (std::size_t k = 0; sites.size() < n; ++k) {
+    if (!mixed && random.integer(0, 7) == 0) {
+      const long extent = static_cast<long>(radius);
+      sites.push_back({static_cast<double>(origin[0]) + random.eighths(-extent, extent),
+                       static_cast<double>(origin[1]) + random.eighths(-extent, extent),
+                       static_cast<double>(origin[2]) + random.eighths(-extent, extent), random.eighths(0, extent)});
+      continue;
+    }
+    const std::size_t i = k % points.size();
+    if (k < points.size())
+      std::swap(points[i], points[i + static_cast<std::size_t>(random.integer(0, static_cast<long>(points.size() - i) - 1))]);
+    sites.push_back(site_at(origin, permuted({points[i][0], points[i][1], 0}, permutation),
+                            weights[mixed ? random.integer(0, 2) : 0]));
+  }
+  return sites;
 }
 
 }  // namespace
@@ -79,6 +265,15 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
     return sites;
   }
   Random random(seed * 0x2545F4914F6CDD1Dull + static_cast<std::uint64_t>(family));
+  switch (family) {
+    case Site_family::sphere_tangent: return tangent_to_one_sphere(n, random, false);
+    case Site_family::circle_tangent: return tangent_to_one_sphere(n, random, true);
+    case Site_family::two_spheres: return tangent_to_two_spheres(n, random);
+    case Site_family::shells: return concentric_shells(n, random);
+    case Site_family::circle: return on_one_circle(n, random, false);
+    case Site_family::circle_mixed: return on_one_circle(n, random, true);
+    default: break;
+  }
   std::vector<Site> sites;
   sites.reserve(n);
   std::set<std::array<double, 4>> lattice_sites;  // the lattice family's sites so far: repeats found in O(log n)
@@ -167,7 +362,13 @@ std::vector<Site> generate_sites(Site_family family, std::size_t n, std::uint64_
       case Site_family::scaled_up:
       case Site_family::scaled_down:
       case Site_family::lattice_noise:
-        break;  // built from other families above
+      case Site_family::sphere_tangent:
+      case Site_family::circle_tangent:
+      case Site_family::two_spheres:
+      case Site_family::shells:
+      case Site_family::circle:
+      case Site_family::circle_mixed:
+        break;  // built above
       case Site_family::cospherical: {
         // Balls tangent to the sphere of radius 2 about the origin from outside: centre on an axis at
         // distance c, weight c - 2.

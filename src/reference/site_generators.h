@@ -26,6 +26,12 @@ enum class Site_family {
   lattice_noise,
   far_vertices,
   wide_range,
+  sphere_tangent,
+  circle_tangent,
+  two_spheres,
+  shells,
+  circle,
+  circle_mixed,
 };
 
 struct Site_family_description {
@@ -51,6 +57,12 @@ inline constexpr Site_family_description kSiteFamilies[] = {
     {Site_family::lattice_noise, "lattice-noise", "lattice points moved by one ulp: vertices nearly, but not exactly, coincide"},
     {Site_family::far_vertices, "far-vertices", "nearly cocircular points above a cloud: vertices 10^6 input diameters away"},
     {Site_family::wide_range, "wide-range", "uniform, one site in eight scaled by 2^k and one by 2^-k, k from 20 to 900"},
+    {Site_family::sphere_tangent, "sphere-tangent", "every ball tangent to one sphere, integer centres: all tie at its centre"},
+    {Site_family::circle_tangent, "circle-tangent", "coplanar integer centres, every ball tangent to one circle: all tie at its centre"},
+    {Site_family::two_spheres, "two-spheres", "every ball tangent to two equal spheres: all tie at both centres"},
+    {Site_family::shells, "shells", "concentric shells of integer points, one weight per shell"},
+    {Site_family::circle, "circle", "centres on one circle with one weight (all tie along its axis), one site in eight elsewhere"},
+    {Site_family::circle_mixed, "circle-mixed", "centres on one circle, weights from three values"},
 };
 
 const std::vector<std::string>& site_family_names();

@@ -8,6 +8,7 @@
 #include "support/diagram_checks.h"
 #include "io/read_sites.h"
 #include "octree/octree_diagram.h"
+#include "support/time_limit.h"
 
 using namespace apollonius;
 using namespace apollonius::testing;
@@ -113,4 +114,17 @@ TEST_CASE("regression: octree_exact_in_box_slow_for_subnormal_sites") {
 // 14 s. Once a vertex's rounded point is known, vertex_in_box's static filter decides by it (1.4 s).
 TEST_CASE("regression: octree_in_box_exceptions_for_sites_from_1e-158_to_4e291") {
   check_octree_equals_brute_force("octree_in_box_exceptions_for_sites_from_1e-158_to_4e291.balls");
+}
+
+// Issue 21: 13 sites tied at one point (every ball tangent to one sphere; coplanar balls tangent to one
+// circle). No box about the tie point ever had 12 or fewer candidates, so none settled, and refinement went
+// on to the last binade about the origin: more than 100 s. Such a box is now a tie-point leaf
+// (box_refinement.cpp, classify_tie). The time limit makes the old behaviour a failure, not a hang.
+TEST_CASE("regression: octree_tie_of_13_sites_never_settled") {
+  for (const char* name : {"octree_tie_of_13_sites_never_settled_tangent_to_one_sphere.balls",
+                           "octree_tie_of_13_sites_never_settled_coplanar_tangent_to_one_circle.balls"}) {
+    Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);
+    check_octree_equals_brute_force(name);
+    MESSAGE(std::string(name) << ": " << limit.stop() << " s");
+  }
 }

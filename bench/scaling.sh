@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Scaling of `apollonius3d vertices` on generated families (issue 21): wall time and peak memory at each
+# size, and per site as a ratio to the uniform family at the same size (the goal: at most 2).
+# Usage: bench/scaling.sh [BINARY (default build/apollonius3d)] [SIZES (default "1000 4000 10000")]
+#        [FAMILIES (default "lattice lattice-noise far-vertices sphere-tangent circle")] [TIMEOUT s (default 120)]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+binary=${1:-build/apollonius3d} sizes=${2:-1000 4000 10000}
+families=${3:-lattice lattice-noise far-vertices sphere-tangent circle} limit=${4:-120}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+run() {  # family n -> "seconds peak_MiB" or "timeout -"
+  "$binary" generate "$1" --n "$2" --seed 7 -o "$work/in.balls"
+  if /usr/bin/time -f "%e %M" -o "$work/time" timeout "$limit" "$binary" vertices "$work/in.balls" > /dev/null 2>&1; then
+    awk '{printf "%s %.1f\n", $1, $2 / 1024}' "$work/time"
+  else
+    echo "timeout -"
+  fi
+}
+printf "| family | sites | seconds | peak MiB | time/site vs uniform | memory/site vs uniform |\n|---|--:|--:|--:|--:|--:|\n"
+for n in $sizes; do
+  read -r base_seconds base_memory < <(run uniform "$n")
+  printf "| uniform | %d | %s | %s | 1 | 1 |\n" "$n" "$base_seconds" "$base_memory"
+  for family in $families; do
+    read -r seconds memory < <(run "$family" "$n")
+    if [ "$seconds" = timeout ]; then
+      printf "| %s | %d | > %s | - | - | - |\n" "$family" "$n" "$limit"
+    else
+      printf "| %s | %d | %s | %s | %.2f | %.2f |\n" "$family" "$n" "$seconds" "$memory" \
+        "$(echo "$seconds / $base_seconds" | bc -l)" "$(echo "$memory / $base_memory" | bc -l)"
+    fi
+  done
+done
