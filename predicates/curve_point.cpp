@@ -55,6 +55,7 @@ NT to_number(const Rational& x) {
 
 template <>
 Field_point<Rational> Curve_point::coordinates<Rational>() const {
+  if (exact_) return *exact_;
   const std::optional<Cut_line<Rational>> line = cut_line(trisector_->geometry<Rational>(), cut_, offset_);
   if (!line) throw std::logic_error("curve point of a cut parallel to its trisector's plane");
   const Cut_line<Rational>& l = *line;
@@ -76,6 +77,7 @@ Field_point<Rational> Curve_point::coordinates<Rational>() const {
     p.scaled[j] = flip ? Quadratic<Rational>{-a, -b} : Quadratic<Rational>{a, b};
   }
   p.denominator = flip ? -denominator : denominator;
+  exact_ = std::make_shared<const Field_point<Rational>>(p);
   return p;
 }
 
