@@ -134,9 +134,12 @@ certify_input() {
        "$(count duplicate "$report") | $(count surplus "$report") $row_end $c_seconds |"
 }
 
-# link_count NAME REPORT: the integer after "NAME": in the report's link counts.
+# link_count NAME REPORT: the integer after "NAME": in the report's link counts; - when there are none
+# (an empty claim has no links).
 link_count() {
-  grep -m 1 '^  "links"' "$2" | sed -E 's/.*"links": \{"counts":\{([^}]*)\}.*/\1/' | sed -E "s/.*\"$1\":([0-9]+).*/\1/"
+  local value
+  value=$(grep -m 1 '^  "links"' "$2" | sed -E 's/.*"links": \{"counts":\{([^}]*)\}.*/\1/' | sed -E "s/.*\"$1\":([0-9]+).*/\1/" || true)
+  echo "${value:--}"
 }
 
 # links_input LABEL FILE_STEM BALLS: the table row of one input for --peer voronota-link.

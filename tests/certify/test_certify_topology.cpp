@@ -5,8 +5,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -196,7 +199,7 @@ TEST_CASE("planted topology defects: a missing trisector, a spurious one, a dupl
   }
 }
 
-TEST_CASE("Voronota's links: read with their sites, judged right on pept, planted wrong and missing links caught") {
+TEST_CASE("Voronota's links on pept: 2 missing as recorded; planted wrong and missing links caught and named") {
   Scratch scratch;
   // Recorded: `voronota calculate-vertices --link < tests/data/pept.balls` (tests/data/README.md).
   const std::string recorded = kData + "/voronota/pept.link.txt";
@@ -368,4 +371,55 @@ TEST_CASE("malformed claims: out-of-range links and bad topology JSON exit 2 wit
   CHECK(detect_claim_format("{\"vertices\": []}") == Claim_format::json);
   CHECK(detect_claim_format("{\"trisectors\": [}") == Claim_format::json);  // malformed: the JSON reader names the line
   CHECK_THROWS_AS(read_claimed_topology("{\"faces\": []}", "t", 5), Input_error);
+}
+
+TEST_CASE("property: mutated claims are read or refused with Input_error, never anything else") {
+  // Byte flips, deletions and insertions in a Voronota --link list and a topology claim; whatever is read
+  // keeps its invariants (sites sorted, distinct, in range; links -1 or within the list).
+  Scratch scratch;
+  const std::string link = read_path(kData + "/voronota/ANO3_3CONNECT.link.txt");
+  const std::string topology = own_topology(vdrc_balls(scratch, "ANO3_3CONNECT")).dump(1);
+  std::size_t read = 0, refused = 0;
+  for (std::uint64_t seed = 1; seed <= 3000; ++seed) {
+    CAPTURE(seed);
+    std::mt19937_64 random(seed);
+    std::string content = seed % 2 == 0 ? link : topology;
+    const char alphabet[] = "0123456789 -.,[]{}\n\"eE+xinf";
+    for (int edit = 0; edit < 1 + static_cast<int>(random() % 4); ++edit) {
+      const std::size_t at = random() % content.size();
+      const char c = alphabet[random() % (sizeof alphabet - 1)];
+      switch (random() % 3) {
+        case 0: content[at] = c; break;
+        case 1: content.erase(at, 1); break;
+        default: content.insert(at, 1, c); break;
+      }
+    }
+    try {
+      if (detect_claim_format(content) == Claim_format::topology) {
+        const Claimed_topology t = read_claimed_topology(content, "mutated", 9);
+        for (std::size_t c = 0; c < 3; ++c)
+          for (const Claimed_set& set : t.categories[c].sets) {
+            REQUIRE(set.sites.size() >= c + 2);
+            REQUIRE(std::adjacent_find(set.sites.begin(), set.sites.end(), std::greater_equal<>()) == set.sites.end());
+            REQUIRE(set.sites.back() < 9);
+          }
+      } else {
+        const Claimed_vertex_list list = read_claimed_vertices(content, "mutated", std::nullopt, 9);
+        for (const Claimed_vertex& claim : list.vertices) {
+          REQUIRE(std::adjacent_find(claim.sites.begin(), claim.sites.end(), std::greater_equal<>()) == claim.sites.end());
+          REQUIRE(claim.sites.back() < 9);
+          if (claim.links)
+            for (const long long l : *claim.links) REQUIRE((l >= -1 && l < static_cast<long long>(list.vertices.size())));
+        }
+      }
+      ++read;
+    } catch (const Input_error& e) {
+      REQUIRE(e.file() == "mutated");
+      REQUIRE(e.line() <= static_cast<std::size_t>(std::count(content.begin(), content.end(), '\n')) + 1);
+      ++refused;
+    }
+  }
+  MESSAGE(read << " mutated claims read, " << refused << " refused");
+  CHECK(read > 100);
+  CHECK(refused > 100);
 }
