@@ -2,6 +2,8 @@
 # The peers' record, one Markdown table row per input:
 #  --peer voronota (default): `voronota calculate-vertices` on each input, then
 #    `apollonius3d certify INPUT VORONOTA_OUTPUT --format voronota --report`;
+#  --peer voronota-link: the same with `calculate-vertices --link`, its links judged against the edges of
+#    the whole diagram, and the vertex-free cells that no vertex list shows;
 #  --peer float: `apollonius3d crosscheck INPUT`, our own octree in plain doubles against the certified one.
 # See bench/README.md. Usage: bench/certify_peers.sh --help
 set -euo pipefail
@@ -20,7 +22,7 @@ N=100
 SEED=1
 TIMEOUT=600          # seconds per run of either tool
 THREADS=1
-PEER=voronota        # voronota | float
+PEER=voronota        # voronota | voronota-link | float
 
 usage() {
   cat <<EOF
@@ -34,7 +36,8 @@ Usage: $0 [options]
   --n N, --seed S   size and seed of the generated inputs (default: $N, $SEED)
   --timeout SECONDS limit per run of each tool (default: $TIMEOUT)
   --threads N       for apollonius3d certify and crosscheck (default: $THREADS)
-  --peer NAME       voronota (certify its output) or float (crosscheck our float path); default: $PEER
+  --peer NAME       voronota (certify its output), voronota-link (its output with --link: links and
+                    vertex-free cells) or float (crosscheck our float path); default: $PEER
   --work-dir DIR    inputs, outputs, reports (default: bench/work/certify)
 Env: BENCH_DATA_DIR (default bench/data), APOLLONIUS3D (binary), VORONOTA (binary).
 EOF
@@ -60,7 +63,7 @@ while [[ $# -gt 0 ]]; do
 done
 [[ $TIMEOUT =~ ^[1-9][0-9]*$ ]] || die "--timeout must be a positive number of seconds"
 [[ $N =~ ^[1-9][0-9]*$ && $SEED =~ ^[0-9]+$ ]] || die "--n and --seed must be integers"
-[[ $PEER == voronota || $PEER == float ]] || die "--peer must be voronota or float"
+[[ $PEER == voronota || $PEER == voronota-link || $PEER == float ]] || die "--peer must be voronota, voronota-link or float"
 [[ $PEER == float ]] || command -v "$VORONOTA" >/dev/null || die "voronota not found ('$VORONOTA')"
 [[ -x $APOLLONIUS ]] || die "apollonius3d not found at '$APOLLONIUS' (run scripts/build.sh)"
 mkdir -p "$WORK_DIR/inputs" "$WORK_DIR/out"
@@ -97,8 +100,8 @@ timed() {
   else STATUS="exit $rc"; fi
 }
 
-# count NAME REPORT: the integer after "NAME": in the report's counts line.
-count() { grep -m 1 '"counts"' "$2" | sed -E "s/.*\"$1\": ([0-9]+).*/\1/"; }
+# count NAME REPORT: the integer after "NAME": in the report's counts line (compact or spaced JSON).
+count() { grep -m 1 '"counts"' "$2" | sed -E "s/.*\"$1\": ?([0-9]+).*/\1/"; }
 
 # certify_input LABEL FILE_STEM BALLS: prints the table row of one input.
 certify_input() {
@@ -131,6 +134,41 @@ certify_input() {
        "$(count duplicate "$report") | $(count surplus "$report") $row_end $c_seconds |"
 }
 
+# link_count NAME REPORT: the integer after "NAME": in the report's link counts; - when there are none
+# (an empty claim has no links).
+link_count() {
+  local value
+  value=$(grep -m 1 '^  "links"' "$2" | sed -E 's/.*"links": \{"counts":\{([^}]*)\}.*/\1/' | sed -E "s/.*\"$1\":([0-9]+).*/\1/" || true)
+  echo "${value:--}"
+}
+
+# links_input LABEL FILE_STEM BALLS: the table row of one input for --peer voronota-link.
+links_input() {
+  local label=$1 stem=$2 balls=$3 sites v_out report v_seconds free
+  sites=$(awk 'NF >= 4 { n++ } END { print n + 0 }' "$balls")
+  v_out="$WORK_DIR/out/$stem.voronota-link.txt"
+  report="$WORK_DIR/out/$stem.link-report.json"
+  log "$label: $sites sites"
+  timed "$v_out" "$balls" "$VORONOTA" calculate-vertices --link
+  v_seconds=$SECONDS_TAKEN
+  if [[ $STATUS != ok ]]; then
+    echo "| $label | $sites | $STATUS | - | - | - | - | - | - | - | - | - | $v_seconds | - |"
+    return
+  fi
+  rm -f "$report"
+  timed "$WORK_DIR/out/$stem.link-certify.txt" /dev/null \
+    "$APOLLONIUS" certify "$balls" "$v_out" --format voronota --report "$report" --threads "$THREADS"
+  if [[ ! -s $report ]]; then
+    echo "| $label | $sites | ok, certify: $STATUS | - | - | - | - | - | - | - | - | - | $v_seconds | $SECONDS_TAKEN |"
+    tail -n 5 "$WORK_DIR/out/$stem.link-certify.txt.stderr" | sed 's/^/  | /' >&2
+    return
+  fi
+  free=$(grep -m 1 '"vertex_free_cells"' "$report" | sed -E 's/.*\[(.*)\].*/\1/' | tr ',' '\n' | grep -c '[0-9]' || true)
+  echo "| $label | $sites | ok | $(count claims "$report") | $(count confirmed "$report") | $(count missing "$report") |" \
+       "$(link_count links "$report") | $(link_count right "$report") | $(link_count wrong "$report") |" \
+       "$(link_count missing "$report") | $(link_count not_judged "$report") | $free | $v_seconds | $SECONDS_TAKEN |"
+}
+
 # crosscheck_input LABEL FILE_STEM BALLS: the table row of one input for --peer float.
 crosscheck_input() {
   local label=$1 stem=$2 balls=$3 sites out summary
@@ -158,6 +196,12 @@ if [[ $PEER == voronota ]]; then
   echo "| input | sites | voronota | claimed | confirmed | missing | spurious (not a vertex) | of which name a hidden ball | wrong root | coordinates off | duplicate | degenerate surplus | voronota s | certify s |"
   echo "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
   check_input=certify_input
+elif [[ $PEER == voronota-link ]]; then
+  echo "apollonius3d: commit $commit, certify --threads $THREADS; voronota: $(dpkg-query -W -f '${Version}' voronota 2>/dev/null || echo unknown) --link; timeout ${TIMEOUT}s per run"
+  echo
+  echo "| input | sites | voronota | claimed | confirmed | missing vertices | links | right | wrong | missing links | not judged | vertex-free cells | voronota s | certify s |"
+  echo "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+  check_input=links_input
 else
   echo "apollonius3d: commit $commit, crosscheck --threads $THREADS; timeout ${TIMEOUT}s per run"
   echo

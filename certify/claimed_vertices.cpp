@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "io/input_error.h"
 #include "io/json_input.h"
@@ -13,15 +16,23 @@ namespace {
 
 constexpr const char* kJsonFormatName = "apollonius3d-vertices";
 
-// Sorts the sites of a claim and checks the invariant of Claimed_vertex.
-void check_sites(std::vector<Site_index>& sites, std::size_t site_count, const std::string& name, std::size_t line) {
+// Sorts the sites of a claim, with its links, and checks the invariant of Claimed_vertex.
+void check_sites(Claimed_vertex& claim, std::size_t site_count, const std::string& name, std::size_t line) {
+  std::vector<Site_index>& sites = claim.sites;
   if (sites.size() < 4)
     throw Input_error(name, line, "a vertex needs 4 or more site indices, found " + std::to_string(sites.size()));
   for (const Site_index site : sites)
     if (site >= site_count)
       throw Input_error(name, line, "site index " + std::to_string(site) + " out of range (the input has " +
                                         std::to_string(site_count) + " sites)");
-  std::sort(sites.begin(), sites.end());
+  if (claim.links) {  // Voronota's 4 sites: sort the (site, link) pairs
+    std::array<std::pair<Site_index, long long>, 4> pairs;
+    for (std::size_t i = 0; i < 4; ++i) pairs[i] = {sites[i], (*claim.links)[i]};
+    std::sort(pairs.begin(), pairs.end());
+    for (std::size_t i = 0; i < 4; ++i) std::tie(sites[i], (*claim.links)[i]) = pairs[i];
+  } else {
+    std::sort(sites.begin(), sites.end());
+  }
   if (const auto repeated = std::adjacent_find(sites.begin(), sites.end()); repeated != sites.end())
     throw Input_error(name, line, "site index " + std::to_string(*repeated) + " listed twice");
 }
@@ -33,13 +44,16 @@ Site_index parse_site_index(std::string_view field, const std::string& name, std
 }
 
 // One line of text or Voronota output: index_count site indices, then x y z r.
+// With links given (Voronota's --link), they are set before the sites are sorted.
 Claimed_vertex parse_line(const std::vector<std::string_view>& fields, std::size_t index_count, std::size_t site_count,
-                          const std::string& name, std::size_t line) {
+                          const std::string& name, std::size_t line,
+                          std::optional<std::array<long long, 4>> links = std::nullopt) {
   Claimed_vertex claim;
   claim.line = line;
+  claim.links = links;
   for (std::size_t i = 0; i < index_count; ++i) claim.sites.push_back(parse_site_index(fields[i], name, line));
   for (std::size_t j = 0; j < 4; ++j) claim.point[j] = parse_number(fields[index_count + j], name, line, Infinity::allowed);
-  check_sites(claim.sites, site_count, name, line);
+  check_sites(claim, site_count, name, line);
   return claim;
 }
 
@@ -65,13 +79,22 @@ std::vector<Claimed_vertex> read_voronota(const std::vector<Text_line>& lines, s
     if (fields.size() != 8 && fields.size() != 12)
       throw Input_error(name, line.number, "expected 'q1 q2 q3 q4 x y z r', with --link 4 more integers; found " +
                                                std::to_string(fields.size()) + " fields");
-    for (std::size_t i = 8; i < fields.size(); ++i) {
-      long long link = 0;
-      if (!parse_integer(fields[i], link) || link < -1)
-        throw Input_error(name, line.number, "not a vertex link (an index or -1): '" + std::string(fields[i]) + "'");
+    std::optional<std::array<long long, 4>> links;
+    if (fields.size() == 12) {
+      links.emplace();
+      for (std::size_t i = 0; i < 4; ++i)
+        if (!parse_integer(fields[8 + i], (*links)[i]) || (*links)[i] < -1)
+          throw Input_error(name, line.number, "not a vertex link (an index or -1): '" + std::string(fields[8 + i]) + "'");
     }
-    claims.push_back(parse_line(fields, 4, site_count, name, line.number));
+    claims.push_back(parse_line(fields, 4, site_count, name, line.number, links));
   }
+  // A link names a claim by its 0-based index among the data lines (Voronota writes no other lines).
+  for (const Claimed_vertex& claim : claims)
+    if (claim.links)
+      for (const long long link : *claim.links)
+        if (link >= 0 && static_cast<unsigned long long>(link) >= claims.size())
+          throw Input_error(name, claim.line, "vertex link " + std::to_string(link) + " out of range (the list has " +
+                                                  std::to_string(claims.size()) + " vertices)");
   return claims;
 }
 
@@ -127,7 +150,7 @@ std::vector<Claimed_vertex> read_json(const std::string& content, std::size_t si
     for (std::size_t k = 0; k < sites->size(); ++k) claim.sites.push_back(json_site_index(sites->element(k), name));
     const char* const keys[4] = {"x", "y", "z", "r"};
     for (int j = 0; j < 4; ++j) claim.point[j] = json_coordinate(vertex, keys[j], name);
-    check_sites(claim.sites, site_count, name, vertex.line());
+    check_sites(claim, site_count, name, vertex.line());
     claims.push_back(std::move(claim));
   }
   return claims;
@@ -140,19 +163,30 @@ const char* name_of(Claim_format format) {
     case Claim_format::text: return "text";
     case Claim_format::json: return "json";
     case Claim_format::voronota: return "voronota";
+    case Claim_format::topology: return "topology";
   }
   return "unknown";
 }
 
 std::optional<Claim_format> claim_format_from_name(const std::string& name) {
-  for (const Claim_format format : {Claim_format::text, Claim_format::json, Claim_format::voronota})
+  for (const Claim_format format : {Claim_format::text, Claim_format::json, Claim_format::voronota, Claim_format::topology})
     if (name == name_of(format)) return format;
   return std::nullopt;
 }
 
 Claim_format detect_claim_format(const std::string& content) {
-  const std::size_t first = content.find_first_not_of(" \t\r\n\f\v");
-  if (first != std::string::npos && content[first] == '{') return Claim_format::json;
+  const std::size_t start = starts_with_byte_order_mark(content) ? byte_order_mark.size() : 0;
+  const std::size_t first = content.find_first_not_of(" \t\r\n\f\v", start);
+  if (first != std::string::npos && content[first] == '{') {
+    // Malformed JSON is json here; its reader names the line.
+    try {
+      const Json_document document = parse_json(std::string_view(content).substr(start), "");
+      for (const char* key : {"bisectors", "trisectors", "quadrisectors"})
+        if (document.value.is_object() && document.value.contains(key)) return Claim_format::topology;
+    } catch (const Input_error&) {
+    }
+    return Claim_format::json;
+  }
   for (const Text_line& line : split_lines(content)) {
     const std::vector<std::string_view> fields = data_fields(line.text);
     if (fields.empty()) continue;
@@ -172,6 +206,7 @@ Claimed_vertex_list read_claimed_vertices(const std::string& content, const std:
     case Claim_format::json: list.vertices = read_json(content, site_count, name); break;
     case Claim_format::voronota: list.vertices = read_voronota(split_lines(content), site_count, name); break;
     case Claim_format::text: list.vertices = read_text(split_lines(content), site_count, name); break;
+    case Claim_format::topology: throw std::logic_error("read_claimed_vertices: a topology claim is no vertex list");
   }
   return list;
 }

@@ -21,7 +21,7 @@ Crosscheck crosscheck(const std::vector<Site>& sites, const Diagram& certified, 
                       const Coordinate_tolerance& tolerance) {
   std::vector<Claimed_vertex> claims;
   for (std::size_t i = 0; i < floating.vertices.size(); ++i)
-    claims.push_back({floating.vertices[i].tie_set, floating.vertices[i].rounded, i + 1});
+    claims.push_back({floating.vertices[i].tie_set, floating.vertices[i].rounded, i + 1, std::nullopt});
   const Certification judged = judge_claims(sites, certified, claims, tolerance);
 
   Crosscheck check;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang, AddressSanitizer and UndefinedBehaviorSanitizer
 # into build-fuzz/, then runs each for SECONDS (default 600), one after the other, one process each.
-# Corpora grow in build-fuzz/corpus/TARGET (fuzz_read_sites starts from the inputs of tests/data,
+# Corpora grow in build-fuzz/corpus/TARGET (fuzz_read_claims starts from tests/fuzz/claim_seeds and a
+# recorded Voronota --link output; fuzz_read_sites from the inputs of tests/data,
 # examples/ and tests/fuzz/seeds); crashing, leaking and slow inputs are kept in build-fuzz/artifacts/TARGET/.
 # Exits 1 if any target found one. Reproduce one with build-fuzz/tests/fuzz/TARGET FILE; for
 # fuzz_vertices and fuzz_diagram, APOLLONIUS_FUZZ_PRINT_SITES=1 also prints its sites as balls text.
@@ -17,21 +18,23 @@ mkdir -p "$build_dir"
 # sees the rounding modes it sets (-frounding-math, from CMakeLists.txt).
 cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DAPOLLONIUS_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" > "$build_dir/cmake.log" 2>&1 || { cat "$build_dir/cmake.log"; exit 1; }
-cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices fuzz_diagram
+cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices fuzz_diagram fuzz_read_claims
 
 corpus=$build_dir/corpus
-mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices" "$corpus/fuzz_diagram"
+mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices" "$corpus/fuzz_diagram" "$corpus/fuzz_read_claims"
 cp tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/* examples/*.pdb tests/fuzz/seeds/* \
   "$corpus/fuzz_read_sites/"
+cp tests/data/voronota/ANO3_3CONNECT.link.txt tests/fuzz/claim_seeds/* "$corpus/fuzz_read_claims/"
 
 # Per target: extra libFuzzer options. fuzz_vertices decodes at most 12 sites from about 450 bytes.
 declare -A options=(
   [fuzz_read_sites]="-dict=tests/fuzz/read_sites.dict"
   [fuzz_vertices]="-max_len=512"
   [fuzz_diagram]="-max_len=512"
+  [fuzz_read_claims]="-max_len=4096"
 )
 status=0
-for target in fuzz_read_sites fuzz_vertices fuzz_diagram; do
+for target in fuzz_read_sites fuzz_vertices fuzz_diagram fuzz_read_claims; do
   artifacts=$build_dir/artifacts/$target
   mkdir -p "$artifacts"
   echo "fuzz: $target for $seconds s (log: $build_dir/$target.log)"

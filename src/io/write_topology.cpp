@@ -1,9 +1,7 @@
 #include "io/write_topology.h"
 
-#include <algorithm>
-#include <set>
-
 #include "io/json_output.h"
+#include "topology/topology_tie_sets.h"
 
 namespace apollonius {
 namespace {
@@ -57,11 +55,8 @@ void write_diagram_json(std::ostream& out, const Diagram_topology& t, const std:
 }
 
 void write_diagram_topology(std::ostream& out, const Diagram_topology& t) {
-  std::set<std::vector<Site_index>> bisectors, trisectors, quadrisectors;
-  for (const Diagram_face& f : t.faces) bisectors.insert({f.a, f.b});
-  for (const Diagram_edge& e : t.edges) trisectors.insert(e.tie_set);
-  for (const Diagram_vertex& v : t.vertices.vertices) quadrisectors.insert(v.tie_set);
-  Json document{{"bisectors", bisectors}, {"trisectors", trisectors}, {"quadrisectors", quadrisectors}};
+  const Topology_tie_sets sets = topology_tie_sets(t);
+  Json document{{"bisectors", sets.bisectors}, {"trisectors", sets.trisectors}, {"quadrisectors", sets.quadrisectors}};
   write_json_document(out, document);
 }
 
