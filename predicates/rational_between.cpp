@@ -25,8 +25,9 @@ std::pair<Rational, Rational> sqrt_bounds(const Rational& d, unsigned long bits)
   return {low / divisor, high / divisor};
 }
 
-// Rational bounds of (a + b sqrt d) / denominator.
-std::pair<Rational, Rational> bounds(const Root_number<Rational>& x, unsigned long bits) {
+}  // namespace
+
+std::pair<Rational, Rational> rational_bounds(const Root_number<Rational>& x, unsigned long bits) {
   if (certain_sign(x.b) == Sign::ZERO || certain_sign(x.d) == Sign::ZERO) {
     const Rational v = x.a / x.denominator;
     return {v, v};
@@ -37,12 +38,10 @@ std::pair<Rational, Rational> bounds(const Root_number<Rational>& x, unsigned lo
   return {one, other};
 }
 
-}  // namespace
-
 Rational rational_between(const Root_number<Rational>& x, const Root_number<Rational>& y) {
   if (compare(x, y) != Sign::NEGATIVE) throw std::logic_error("rational_between: the numbers are not in order");
   for (unsigned long bits = 32;; bits *= 2) {
-    const Rational below = bounds(x, bits).second, above = bounds(y, bits).first;
+    const Rational below = rational_bounds(x, bits).second, above = rational_bounds(y, bits).first;
     if (below < above) return (below + above) / 2;
   }
 }

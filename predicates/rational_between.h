@@ -4,6 +4,8 @@
 // numbers differ; then the midpoint of the gap.
 #pragma once
 
+#include <utility>
+
 #include "predicates/root_sign.h"
 #include "predicates/rational.h"
 
@@ -11,5 +13,8 @@ namespace apollonius {
 
 // Precondition: x < y (compare(x, y) == NEGATIVE).
 Rational rational_between(const Root_number<Rational>& x, const Root_number<Rational>& y);
+
+// Rationals low <= x <= high, from sqrt(d) enclosed within 2^-bits relative.
+std::pair<Rational, Rational> rational_bounds(const Root_number<Rational>& x, unsigned long bits);
 
 }  // namespace apollonius

@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include "predicates/arc_witness.h"
+#include "predicates/rational_between.h"
 #include "predicates/rounding_guard.h"
 #include "predicates/curve_point_in_box.h"
 #include "predicates/sheet_point.h"
@@ -130,6 +131,38 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const std::vector<Site>
   return all_farther ? Filtered_outcome::edge : Filtered_outcome::undecided;
 }
 
+// A witness's coordinates enclosed once by rationals (rational_between.h), so that finding a box that
+// holds it costs comparisons of rationals, and the exact test (curve_point_in_box) runs only for a box
+// whose bound falls inside an enclosure. The octree may list thousands of boxes for one candidate (one
+// per binade of a deep input), which one exact test each made slow.
+class Located_witness {
+ public:
+  explicit Located_witness(const Curve_point& w) : w_(w) {
+    const Field_point<Rational> X = w.coordinates<Rational>();
+    const Site& o = w.trisector().origin();
+    const double origin[3] = {o.x, o.y, o.z};
+    for (int k = 0; k < 3; ++k) {
+      Vector4<Rational> unit{Rational(0), Rational(0), Rational(0), Rational(0)};
+      unit[k] = Rational(1) / 2;
+      bounds_[k] = rational_bounds(euclidean_value(X, unit, Rational(origin[k])), 64);
+    }
+  }
+
+  bool in(const Axis_box& box) const {
+    bool certain = true;
+    for (int k = 0; k < 3; ++k) {
+      const Rational lo(box.lo[k]), hi(box.hi[k]);
+      if (bounds_[k].second < lo || bounds_[k].first > hi) return false;
+      certain = certain && lo <= bounds_[k].first && bounds_[k].second <= hi;
+    }
+    return certain || curve_point_in_box(w_, box);
+  }
+
+ private:
+  const Curve_point& w_;
+  std::array<std::pair<Rational, Rational>, 3> bounds_;
+};
+
 }  // namespace
 
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
@@ -195,8 +228,9 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     const Curve_point w = arc_witness(t, std::nullopt, std::nullopt);
     const std::vector<Site_index>* test = nullptr;
     if (in_root(w)) {
+      const Located_witness located(w);
       for (std::size_t b : seen.boxes)
-        if (curve_point_in_box(w, regions.boxes[b].box)) {
+        if (located.in(regions.boxes[b].box)) {
           test = &regions.boxes[b].sites;
           break;
         }
