@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "measure/direction_range.h"
 #include "measure/gauss_kronrod_rule.h"
 
 namespace apollonius {
@@ -24,12 +25,22 @@ constexpr std::size_t kMaxPanels = 20000;
 // Events are bracketed to this width in b: the bracket's two-point rule then errs by about its width
 // squared times the jump in the slope of the line integrals, far below any tolerance, and the smooth
 // panels beside it end where the (b - b*)^(3/2) terms are smoothed by the substitution.
-constexpr double kEventWidth = 1e-9;
+constexpr double kEventWidth = 1e-6;
 // Signatures sampled per face before the bisections.
 constexpr int kFaceSamples = 3;
 
 // Thrown when a ray's exit reaches the clearance: the cell needs more candidates.
 struct Clearance_exceeded {};
+
+// QUADPACK's estimate of a Gauss-Kronrod value's error (R. Piessens et al., QUADPACK, 1983, routine
+// qk15): the difference d = |Kronrod - Gauss| estimates the Gauss value's error, which for smooth
+// integrands is far larger than the Kronrod value's; it is scaled by the variation of the integrand
+// (resasc, the integral of |f - its mean|) as resasc min(1, (200 d / resasc)^1.5).
+double kronrod_error(double difference, double resasc) {
+  if (resasc == 0 || difference == 0) return difference;
+  const double ratio = std::min(1.0, 200 * difference / resasc);
+  return resasc * ratio * std::sqrt(ratio);
+}
 
 // One candidate exit along the rays: a cut (radial_cut.h), or a plane of the box: tau = h / p[axis], valid
 // where sign p[axis] > 0.
@@ -121,56 +132,15 @@ class Cell_integrator {
     l.q[axis] = face % 2 == 0 ? 1 : -1;
     l.q[(axis + 2) % 3] = b;
     l.s2 = 1 + b * b;
-    prune({face, -1, 1, b, b}, from, l.live);
+    prune_line(l, from);
     return l;
-  }
-
-  // The directions of a rectangle [a0, a1] x [b0, b1] of a face (b0 = b1 for a line).
-  struct Rectangle {
-    int face;
-    double a0, a1, b0, b1;
-  };
-
-  // The least and greatest of u.V over the rectangle's directions u = p / |p|: on an edge of fixed b,
-  // u.V = (B0 + B1 a) / sqrt(1 + b^2 + a^2) is extreme at the ends or at a = B1 (1 + b^2) / B0 (likewise
-  // on an edge of fixed a); inside, only at u = +-V / |V|.
-  static std::pair<double, double> projection_range(const Rectangle& r, const Vector3& V) {
-    const int axis = r.face / 2, inner = (axis + 1) % 3, outer = (axis + 2) % 3;
-    const double normal = r.face % 2 == 0 ? V[axis] : -V[axis];  // n.V, n the face's axis direction
-    double low = kInfinity, high = -kInfinity;
-    const auto edge = [&](double c0, double c1, double fixed, double lo, double hi) {
-      // (c0 + c1 x) / sqrt(1 + fixed^2 + x^2) over x in [lo, hi]
-      const double s2 = 1 + fixed * fixed;
-      const auto f = [&](double x) { return (c0 + c1 * x) / std::sqrt(s2 + x * x); };
-      const double ends[2] = {f(lo), f(hi)};
-      for (double e : ends) low = std::min(low, e), high = std::max(high, e);
-      if (c0 != 0) {
-        const double critical = c1 * s2 / c0;
-        if (critical > lo && critical < hi) low = std::min(low, f(critical)), high = std::max(high, f(critical));
-      }
-    };
-    for (double b : {r.b0, r.b1}) edge(normal + b * V[outer], V[inner], b, r.a0, r.a1);
-    if (r.b0 < r.b1) {
-      for (double a : {r.a0, r.a1}) edge(normal + a * V[inner], V[outer], a, r.b0, r.b1);
-      if (normal != 0) {
-        const double a = V[inner] / normal, b = V[outer] / normal, norm = std::sqrt(dot(V, V));
-        if (a >= r.a0 && a <= r.a1 && b >= r.b0 && b <= r.b1) (normal > 0 ? high : low) = normal > 0 ? norm : -norm;
-      }
-    }
-    return {low, high};
   }
 
   // The range of the distance t = tau |p| of exit x over the rectangle's directions, (inf, inf) where it
   // never bounds them. For a cut, t = c / (2 (alpha - u.D)); for a plane, t = |h| |p| / |p_m| on the side
   // where it is valid.
-  std::pair<double, double> distance_range(const Rectangle& r, const Exit& x) const {
-    if (x.cut >= 0) {
-      const Radial_cut& cut = candidates_.cuts[x.cut];
-      const auto [low, high] = projection_range(r, cut.offset);
-      const double alpha = cut.weight_step;
-      if (alpha - low <= 0) return {kInfinity, kInfinity};
-      return {cut.numerator / (2 * (alpha - low)), alpha - high > 0 ? cut.numerator / (2 * (alpha - high)) : kInfinity};
-    }
+  std::pair<double, double> distance_range(const Face_rectangle& r, const Exit& x) const {
+    if (x.cut >= 0) return cut_distance_range(candidates_.cuts[x.cut], r);
     const int axis = r.face / 2;
     const auto square_range = [](double lo, double hi) {
       const double m = std::max(lo * lo, hi * hi);
@@ -196,10 +166,41 @@ class Cell_integrator {
             everywhere ? h * std::sqrt(1 + near * near + other2_high) / near : kInfinity};
   }
 
+  // prune() for the rays of one line, with the cuts' ranges in closed form: u.D = (c0 + c1 a) / sqrt(s2 +
+  // a^2) over a in [-1, 1] is extreme at the ends or at a = c1 s2 / c0, where it is +-sqrt(c0^2 / s2 + c1^2).
+  void prune_line(Face_line& l, const std::vector<int>& from) const {
+    ranges_.resize(exits_.size());
+    const double inverse_end = 1 / std::sqrt(l.s2 + 1);
+    double ceiling = kInfinity;
+    for (int k : from) {
+      const Exit& x = exits_[k];
+      if (x.cut < 0) {
+        ranges_[k] = distance_range({l.face, -1, 1, l.q[(l.face / 2 + 2) % 3], l.q[(l.face / 2 + 2) % 3]}, x);
+      } else {
+        const Radial_cut& cut = candidates_.cuts[x.cut];
+        const double c0 = dot(l.q, cut.offset), c1 = cut.offset[l.inner_axis];
+        double low = (c0 - std::fabs(c1)) * inverse_end, high = (c0 + std::fabs(c1)) * inverse_end;
+        if (c0 != 0 && std::fabs(c1 * l.s2) < std::fabs(c0)) {
+          const double extreme = std::sqrt(c0 * c0 / l.s2 + c1 * c1);
+          if (c0 > 0) high = extreme; else low = -extreme;
+        }
+        const double alpha = cut.weight_step;
+        ranges_[k] = alpha - low <= 0 ? std::pair<double, double>{kInfinity, kInfinity}
+                                      : std::pair<double, double>{cut.numerator / (2 * (alpha - low)),
+                                                                  alpha - high > 0 ? cut.numerator / (2 * (alpha - high)) : kInfinity};
+      }
+      ceiling = std::min(ceiling, ranges_[k].second);
+    }
+    ceiling *= 1 + 1e-9;
+    l.live.clear();
+    for (int k : from)
+      if (ranges_[k].first * (1 - 1e-9) <= ceiling) l.live.push_back(k);
+  }
+
   // Keeps, of `from`, the exits whose least distance over the rectangle is at most the least of all their
   // greatest distances: the others are never the least exit there. (Margins of 1e-9 cover the rounding of
   // the ranges.)
-  void prune(const Rectangle& r, const std::vector<int>& from, std::vector<int>& live) const {
+  void prune(const Face_rectangle& r, const std::vector<int>& from, std::vector<int>& live) const {
     ranges_.resize(exits_.size());
     double ceiling = kInfinity;
     for (int k : from) {
@@ -336,8 +337,8 @@ class Cell_integrator {
       t = tau(exits_[exit], p, p_norm);
     ++rays_;
     const double distance = t * p_norm;
-    largest_exit_ = std::max(largest_exit_, distance);
-    if (2 * distance * (1 + kClearanceMargin) >= candidates_.clearance) throw Clearance_exceeded();
+    largest_exit_[l.face] = std::max(largest_exit_[l.face], distance);
+    if (distance * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
     const double t2 = t * t, t3 = t2 * t;
     v[0] += weight * t3 / 3;
     v[1] += weight * t3 * t * p_norm / 4;
@@ -365,6 +366,7 @@ class Cell_integrator {
     const double half = 0.5 * (a1 - a0), middle = 0.5 * (a0 + a1);
     Values kronrod{}, gauss{};
     std::array<std::pair<int, double>, 31> derivatives;
+    std::array<Errors, 31> controlled;
     std::size_t derivative_count = 0;
     for (std::size_t k = 0; k < inner_.node.size(); ++k) {
       Values v{};
@@ -372,9 +374,14 @@ class Cell_integrator {
       const int cut = add_node(l, middle + half * inner_.node[k], exit, 1, v, derivative);
       if (cut >= 0) derivatives[derivative_count++] = {cut, half * inner_.kronrod[k] * derivative};
       for (int c = 0; c < kComponents; ++c) kronrod[c] += inner_.kronrod[k] * v[c], gauss[c] += inner_.gauss[k] * v[c];
+      for (int c = 0; c < kControlled; ++c) controlled[k][c] = v[c];
     }
     Errors error;
-    for (int c = 0; c < kControlled; ++c) error[c] = half * std::fabs(kronrod[c] - gauss[c]);
+    for (int c = 0; c < kControlled; ++c) {
+      double resasc = 0;
+      for (std::size_t k = 0; k < inner_.node.size(); ++k) resasc += inner_.kronrod[k] * std::fabs(controlled[k][c] - 0.5 * kronrod[c]);
+      error[c] = kronrod_error(half * std::fabs(kronrod[c] - gauss[c]), half * resasc);
+    }
     if (!within_budget(error, a1 - a0, kInnerShare) && depth < 16 && a1 - a0 > 1e-12) {
       integrate_piece(l, a0, middle, exit, depth + 1, out);
       integrate_piece(l, middle, a1, exit, depth + 1, out);
@@ -407,9 +414,42 @@ class Cell_integrator {
         least_exit(l, p, p_norm, &least);
         if (least < tau(exits_[exit], p, p_norm) * (1 - 1e-12)) exit = -1;
       }
-      integrate_piece(l, piece.a0, piece.a1, exit, 0, result);
+      if (exit >= 0 && exits_[exit].cut < 0 && exits_[exit].axis != l.inner_axis)
+        integrate_flat_piece(l, piece.a0, piece.a1, exits_[exit], result);
+      else
+        integrate_piece(l, piece.a0, piece.a1, exit, 0, result);
     }
     return result;
+  }
+
+  // A piece whose exit is a plane of the box across the line (the face's own axis, or the outer one):
+  // tau = h / p_m is a constant T there, and with P = |p| = sqrt(s2 + a^2), A = asinh(a / sqrt(s2)) the
+  // integrals are closed forms: volume T^3 / 3 [a], distance T^4 / 4 [a P + s2 A] / 2, direction
+  // T^3 / 3 (q [A] + e [P]), Hessian T^2 / 2 (I [A] - q q^T [a / (s2 P)] + (q e^T + e q^T) [1 / P]
+  // - e e^T [A - a / P]), where p = q + a e. Exact but for rounding: no error estimate to add.
+  void integrate_flat_piece(const Face_line& l, double a0, double a1, const Exit& plane, Line_result& out) {
+    const double T = plane.h / l.q[plane.axis], s = std::sqrt(l.s2);
+    const double P0 = std::sqrt(l.s2 + a0 * a0), P1 = std::sqrt(l.s2 + a1 * a1);
+    const double farthest = T * std::max(P0, P1);
+    largest_exit_[l.face] = std::max(largest_exit_[l.face], farthest);
+    if (farthest * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
+    rays_ += 2;
+    const double dA = std::asinh(a1 / s) - std::asinh(a0 / s), dP = P1 - P0;
+    const double T2 = T * T, T3 = T2 * T;
+    out.value[0] += T3 / 3 * (a1 - a0);
+    out.value[1] += T3 * T / 8 * (a1 * P1 - a0 * P0 + l.s2 * dA);
+    Vector3 g;
+    for (int c = 0; c < 3; ++c) g[c] = l.q[c] * dA;
+    g[l.inner_axis] += dP;
+    for (int c = 0; c < 3; ++c) out.value[2 + c] += T3 / 3 * g[c];
+    const double qq = a1 / (l.s2 * P1) - a0 / (l.s2 * P0), qe = 1 / P1 - 1 / P0, ee = dA - (a1 / P1 - a0 / P0);
+    Vector3 e{0, 0, 0};
+    e[l.inner_axis] = 1;
+    const auto entry = [&](int i, int j) {
+      return 0.5 * T2 * ((i == j ? dA : 0.0) - l.q[i] * l.q[j] * qq + (l.q[i] * e[j] + e[i] * l.q[j]) * qe - e[i] * e[j] * ee);
+    };
+    out.value[5] += entry(0, 0), out.value[6] += entry(1, 1), out.value[7] += entry(2, 2);
+    out.value[8] += entry(0, 1), out.value[9] += entry(0, 2), out.value[10] += entry(1, 2);
   }
 
   // ---- the outer integral over b ----
@@ -432,6 +472,7 @@ class Cell_integrator {
   bool panel(int face, double l, double r, bool force, const std::vector<int>& from) {
     Values kronrod{}, gauss{};
     Errors inner{};
+    std::array<Errors, 31> controlled{};
     std::vector<std::pair<int, double>> derivatives;
     for (std::size_t k = 0; k < outer_.node.size(); ++k) {
       const double s = 0.5 * (1 + outer_.node[k]);
@@ -442,12 +483,18 @@ class Cell_integrator {
         kronrod[c] += outer_.kronrod[k] * jacobian * line_result.value[c];
         gauss[c] += outer_.gauss[k] * jacobian * line_result.value[c];
       }
+      for (int c = 0; c < kControlled; ++c) controlled[k][c] = jacobian * line_result.value[c];
       for (int c = 0; c < kControlled; ++c) inner[c] += outer_.kronrod[k] * jacobian * line_result.error[c];
       for (const auto& [cut, d] : line_result.derivatives)
         derivatives.push_back({cut, outer_.kronrod[k] * jacobian * d});
     }
     Errors error;
-    for (int c = 0; c < kControlled; ++c) error[c] = std::fabs(kronrod[c] - gauss[c]) + inner[c];
+    for (int c = 0; c < kControlled; ++c) {
+      double resasc = 0;  // in units of the rule on [-1, 1], like kronrod and gauss here
+      for (std::size_t k = 0; k < outer_.node.size(); ++k)
+        resasc += outer_.kronrod[k] * std::fabs(controlled[k][c] - 0.5 * kronrod[c]);
+      error[c] = kronrod_error(std::fabs(kronrod[c] - gauss[c]), resasc) + inner[c];
+    }
     if (!force && !within_budget(error, r - l)) return false;
     if (!within_budget(error, r - l)) reached_ = false;
     accept(kronrod, error, derivatives);
@@ -545,7 +592,7 @@ class Cell_integrator {
   Errors total_error_{};
   std::vector<double> derivative_total_;
   double volume_budget_ = 0, distance_budget_ = 0;
-  double largest_exit_ = 0;
+  std::array<double, 6> largest_exit_{0, 0, 0, 0, 0, 0};
   std::size_t rays_ = 0, panels_ = 0;
   bool reached_ = true;
 };

@@ -39,8 +39,8 @@ struct Cell_cubature_options {
 
 struct Cell_cubature_result {
   Cell_measure measure;
-  bool clearance_exceeded = false;  // some ray's exit t had 2 t >= the clearance: more candidates needed
-  double largest_exit = 0;          // the largest exit t seen
+  bool clearance_exceeded = false;          // some ray's exit reached its face's clearance: more candidates
+  std::array<double, 6> largest_exit{};     // per face of the cubed sphere, the largest exit seen
 };
 
 // The measures of the cell of `site` bounded by the candidates' cuts and the box (which contains the site).

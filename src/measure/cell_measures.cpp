@@ -30,19 +30,23 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, sites.size(), [&](std::size_t i) {
       if (!active[i]) return;
-      // Start from the vertex neighbours; while some ray reaches the clearance, take in every site whose
-      // gap is within reach of the exits seen (cut_candidates.h). Terminates: each round takes in at
-      // least the site that set the clearance, and there are finitely many.
-      double reach = 0;
+      // Start from the vertex neighbours; while some ray reaches its face's clearance, take in every site
+      // that can come within 1.5 times the exits seen on some face. Terminates: each round takes in at
+      // least the site that set the clearance that was reached, and there are finitely many.
+      std::array<double, 6> reach{0, 0, 0, 0, 0, 0};
       for (;;) {
         const Cut_candidates candidates =
-            cut_candidates(sites, active, static_cast<Site_index>(i), neighbours[i], reach);
+            cut_candidates(sites, active, static_cast<Site_index>(i), neighbours[i], reach, domain);
         Cell_cubature_result result = integrate_cell(sites[i], candidates, domain, cubature);
         if (!result.clearance_exceeded) {
           measures[i] = std::move(result.measure);
           return;
         }
-        reach = std::max({2 * reach, 2.5 * result.largest_exit, candidates.clearance});
+        for (int f = 0; f < 6; ++f) {
+          reach[f] = std::max(reach[f], 1.5 * result.largest_exit[f]);
+          if (result.largest_exit[f] * (1 + kClearanceMargin) >= candidates.clearance[f])
+            reach[f] = std::max(reach[f], candidates.clearance[f]);
+        }
       }
     });
   });

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "predicates/unit_roundoff.h"
+#include "measure/direction_range.h"
 
 namespace apollonius {
 
@@ -24,18 +24,44 @@ std::vector<std::vector<Site_index>> vertex_neighbours(const Diagram& diagram) {
 }
 
 Cut_candidates cut_candidates(const std::vector<Site>& sites, const std::vector<bool>& active, Site_index i,
-                              const std::vector<Site_index>& proposed, double reach) {
-  Cut_candidates result{{}, std::numeric_limits<double>::infinity()};
+                              const std::vector<Site_index>& proposed, const std::array<double, 6>& reach,
+                              const Axis_box& box) {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  Cut_candidates result;
+  result.clearance.fill(kInfinity);
+  const Site& s = sites[i];
+  const double x[3] = {s.x, s.y, s.z};
+  double farthest = 0;  // from the site to a corner of the box
+  for (int corner = 0; corner < 8; ++corner) {
+    double d2 = 0;
+    for (int a = 0; a < 3; ++a) {
+      const double d = ((corner >> a) & 1 ? box.hi[a] : box.lo[a]) - x[a];
+      d2 += d * d;
+    }
+    farthest = std::max(farthest, std::sqrt(d2));
+  }
   std::vector<bool> chosen(sites.size(), false);
   for (Site_index j : proposed)
     if (j != i && active[j]) chosen[j] = true;
   for (Site_index j = 0; j < sites.size(); ++j) {
     if (j == i || !active[j]) continue;
-    const Radial_cut cut = Radial_cut::between(sites[i], sites[j], j);
-    if (chosen[j] || cut.gap <= reach)
+    const Radial_cut cut = Radial_cut::between(s, sites[j], j);
+    if (chosen[j]) {
       result.cuts.push_back(cut);
-    else  // the rounded gap is within 8 ulps of |D| + |alpha| of the exact one: 16 keep a lower bound
-      result.clearance = std::min(result.clearance, cut.gap - 16 * kUnitRoundoff * (cut.gap + 2 * std::fabs(cut.weight_step)));
+      continue;
+    }
+    if (cut.gap > 2 * farthest * (1 + kClearanceMargin)) continue;  // beats i nowhere in the box
+    std::array<double, 6> nearest;
+    bool within_reach = false;
+    for (int f = 0; f < 6; ++f) {
+      nearest[f] = cut_distance_range(cut, {f, -1, 1, -1, 1}).first * (1 - kClearanceMargin);
+      within_reach = within_reach || nearest[f] <= reach[f];
+    }
+    if (within_reach) {
+      result.cuts.push_back(cut);
+    } else {
+      for (int f = 0; f < 6; ++f) result.clearance[f] = std::min(result.clearance[f], nearest[f]);
+    }
   }
   return result;
 }

@@ -157,6 +157,23 @@ TEST_CASE("one site: the cell is the box; volume, distance and direction integra
   CAPTURE(direction_difference);
   CHECK(direction_difference <= 1e-9 * m[0].volume);
   CHECK(m[0].volume_derivatives.empty());
+
+  // The median Hessian is -dG/dc, G the direction integral about c, for a cell that does not move with c
+  // (the box, for a single site): central differences of G as the site moves.
+  const double h = 1e-4;
+  for (int a = 0; a < 3; ++a) {
+    std::vector<Site> plus = sites, minus = sites;
+    (a == 0 ? plus[0].x : a == 1 ? plus[0].y : plus[0].z) += h;
+    (a == 0 ? minus[0].x : a == 1 ? minus[0].y : minus[0].z) -= h;
+    const Cell_measure mp = measure(plus, box, 1e-11)[0], mm = measure(minus, box, 1e-11)[0];
+    const int index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};  // xx yy zz xy xz yz
+    for (int b = 0; b < 3; ++b) {
+      CAPTURE(a);
+      CAPTURE(b);
+      const double difference = -(mp.direction_integral[b] - mm.direction_integral[b]) / (2 * h);
+      CHECK(m[0].median_hessian[index[a][b]] == doctest::Approx(difference).epsilon(1e-6));
+    }
+  }
 }
 
 TEST_CASE("equal weights: the volumes of the convex Voronoi cells (CGAL) within the error estimates") {
@@ -326,7 +343,7 @@ TEST_CASE("candidates: without any proposal from the diagram, the clearance find
       std::vector<Site_index> everyone;
       for (Site_index j = 0; j < n; ++j) everyone.push_back(j);
       const Cell_cubature_result all =
-          integrate_cell(sites[i], cut_candidates(sites, active, static_cast<Site_index>(i), everyone, 0), kUnitCube, {1e-9});
+          integrate_cell(sites[i], cut_candidates(sites, active, static_cast<Site_index>(i), everyone, {}, kUnitCube), kUnitCube, {1e-9});
       REQUIRE_FALSE(all.clearance_exceeded);
       CAPTURE(seed);
       CAPTURE(i);
@@ -334,7 +351,7 @@ TEST_CASE("candidates: without any proposal from the diagram, the clearance find
       // With no proposal at all, the clearance turns the first rays away.
       if (n > 1) {
         const Cell_cubature_result none =
-            integrate_cell(sites[i], cut_candidates(sites, active, static_cast<Site_index>(i), {}, 0), kUnitCube, {1e-9});
+            integrate_cell(sites[i], cut_candidates(sites, active, static_cast<Site_index>(i), {}, {}, kUnitCube), kUnitCube, {1e-9});
         CHECK(none.clearance_exceeded);
       }
     }
