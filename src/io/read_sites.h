@@ -17,10 +17,12 @@ struct Read_options {
 
 enum class Input_format { balls, vdrc, structure };
 
-// Invariant: sites is not empty, and sites[i] is the i-th ball or atom of the input, in input order.
+// Invariant: sites is not empty, and sites[i] is the i-th ball or atom of the input, in input order;
+// lines is empty or has one entry per site.
 struct Site_input {
   std::vector<Site> sites;
   Input_format format;
+  std::vector<std::size_t> lines;  // the 1-based line of each site in balls and vdrc text; empty for structures
 };
 
 // Structure files are recognised by extension (.pdb .ent .cif .mmcif, each optionally .gz); anything else
