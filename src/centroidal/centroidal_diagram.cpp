@@ -192,9 +192,7 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
 
     // 3. Site step (median_step.h).
     if (options.move_sites) {
-      Median_steps plain = median_steps(sites, state.measures, domain);
-      const std::vector<double> limits = step_limits(sites);
-      limit_steps(plain.step, limits);
+      const Median_steps plain = median_steps(sites, state.measures, domain);
       // The accelerated step first, the plain one if it is refused (anderson_acceleration.h).
       std::vector<double> x(3 * n), f(3 * n);
       for (std::size_t i = 0; i < n; ++i) {
@@ -205,11 +203,9 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
       std::vector<Vector3> accelerated(n);
       bool inside = true;
       for (std::size_t i = 0; i < n; ++i)
-        for (int a = 0; a < 3; ++a) accelerated[i][a] = mixed[3 * i + a];
-      limit_steps(accelerated, limits);
-      for (std::size_t i = 0; i < n; ++i)
         for (int a = 0; a < 3; ++a) {
-          const double c = x[3 * i + a] + accelerated[i][a];
+          accelerated[i][a] = mixed[3 * i + a];
+          const double c = x[3 * i + a] + mixed[3 * i + a];
           inside = inside && c > domain.lo[a] && c < domain.hi[a];
         }
       for (Site_index i : plain.shortened)

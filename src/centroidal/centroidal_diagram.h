@@ -7,8 +7,7 @@
 //  2. Stop if, at the accepted weights, every cell's relative volume error |M_i - m_i| / M_i and every
 //     median residual |G_i| / m_i (median_step.h), each plus its quadrature error estimate, are at most
 //     the tolerance.
-//  3. Site step: one Newton step toward each cell's geometric median, each at most 0.45 of its site's
-//     least gap (median_step.h: no site can then hide another), halved while it would hide a site
+//  3. Site step: one Newton step toward each cell's geometric median, halved while it would hide a site
 //     or nearly empty a cell, shortened where it would leave the domain.
 // Every diagram is the certified one; the integrals are cubatures (measure/cell_measures.h) whose
 // tolerance follows the errors down to tolerance / 20, so that the stopping rule, which adds the

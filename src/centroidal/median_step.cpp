@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace apollonius {
 
@@ -33,30 +32,6 @@ Median_steps median_steps(const std::vector<Site>& sites, const std::vector<Cell
     for (int a = 0; a < 3; ++a) result.step[i][a] = fraction * newton[a];
   }
   return result;
-}
-
-std::vector<double> step_limits(const std::vector<Site>& sites) {
-  std::vector<double> limits(sites.size(), std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < sites.size(); ++i)
-    for (std::size_t j = i + 1; j < sites.size(); ++j) {
-      const double gap = std::hypot(sites[i].x - sites[j].x, sites[i].y - sites[j].y, sites[i].z - sites[j].z) -
-                         std::fabs(sites[i].w - sites[j].w);
-      limits[i] = std::min(limits[i], 0.45 * gap);
-      limits[j] = std::min(limits[j], 0.45 * gap);
-    }
-  for (double& l : limits) l = std::max(l, 0.0);
-  return limits;
-}
-
-std::size_t limit_steps(std::vector<Vector3>& steps, const std::vector<double>& limits) {
-  std::size_t shortened = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double length = std::sqrt(dot(steps[i], steps[i]));
-    if (!(length > limits[i])) continue;
-    for (int a = 0; a < 3; ++a) steps[i][a] *= limits[i] / length;
-    ++shortened;
-  }
-  return shortened;
 }
 
 double median_residual(const Cell_measure& m) {

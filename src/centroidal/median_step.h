@@ -28,15 +28,6 @@ struct Median_steps {
 Median_steps median_steps(const std::vector<Site>& sites, const std::vector<Cell_measure>& measures,
                           const Axis_box& domain);
 
-// The longest step each site may take without any site hiding another, whatever the others do: 0.45 of
-// its least gap |x_i - x_j| - |w_i - w_j| (positive while no site is hidden). If every site moves less
-// than that, each pair keeps at least a tenth of its gap, so the step never hides a site and the loop
-// does not have to halve every site's step for one pair. O(n^2).
-std::vector<double> step_limits(const std::vector<Site>& sites);
-
-// Shortens each step to its limit (same direction); returns how many were shortened.
-std::size_t limit_steps(std::vector<Vector3>& steps, const std::vector<double>& limits);
-
 // The residual with its error estimate, (|G_i| + e_G) / m_i; 0 for a cell without volume.
 double median_residual(const Cell_measure& m);
 
