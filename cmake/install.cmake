@@ -1,13 +1,14 @@
 # cmake --install: the libraries of every layer but the command line, their headers under
 # include/apollonius3d/<layer>/, the apollonius3d binary, and the CMake package apollonius3d.
 include(CMakePackageConfigHelpers)
-set(apollonius3d_installed_layers predicates diagram octree topology reference io certify)
+set(apollonius3d_installed_layers predicates diagram octree topology reference measure io certify)
 set(apollonius3d_header_folders
   predicates predicates
   src/diagram diagram
   src/octree octree
   src/topology topology
   src/reference reference
+  src/measure measure
   src/io io
   certify certify)
 

@@ -3,6 +3,7 @@
 #include <ostream>
 #include <utility>
 
+#include "cli/centroidal_command.h"
 #include "cli/certify_command.h"
 #include "cli/crosscheck_command.h"
 #include "cli/diagram_command.h"
@@ -15,7 +16,8 @@ namespace apollonius {
 namespace {
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 ok, 1 discrepancies (certify, crosscheck), 2 usage or input error, 3 internal error.";
+    "Exit codes: 0 ok, 1 discrepancies (certify, crosscheck) or not converged (centroidal), 2 usage or input\n"
+    "error, 3 internal error.";
 
 // "apollonius3d" or "apollonius3d COMMAND", whichever the arguments reached.
 std::string command_path(const CLI::App& app) {
@@ -46,6 +48,7 @@ int run_cli(const std::vector<std::string>& arguments, std::ostream& out, std::o
       {"certify", add_certify_command},
       {"crosscheck", add_crosscheck_command},
       {"generate", add_generate_command},
+      {"centroidal", add_centroidal_command},
   };
   std::vector<std::pair<CLI::App*, Command_run>> commands;
   for (const auto& [name, add] : registrations) {

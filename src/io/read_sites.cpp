@@ -43,12 +43,14 @@ std::string field_count_error(std::size_t expected, const char* shape, std::size
 }
 
 // Balls text: `x y z w` on each data line. Called when the first data line is one, so never empty.
-std::vector<Site> parse_balls(const std::vector<Text_line>& lines, const std::string& name) {
+std::vector<Site> parse_balls(const std::vector<Text_line>& lines, const std::string& name,
+                              std::vector<std::size_t>& site_lines) {
   std::vector<Site> sites;
   for (const Text_line& line : lines) {
     const std::vector<std::string_view> fields = data_fields(line.text);
     if (fields.empty()) continue;
     if (fields.size() != 4) throw Input_error(name, line.number, field_count_error(4, "x y z w", fields.size()));
+    site_lines.push_back(line.number);
     sites.push_back({parse_number(fields[0], name, line.number), parse_number(fields[1], name, line.number),
                      parse_number(fields[2], name, line.number), parse_number(fields[3], name, line.number)});
   }
@@ -56,7 +58,8 @@ std::vector<Site> parse_balls(const std::vector<Text_line>& lines, const std::st
 }
 
 // vdrc: a count line, then exactly that many `id x y z r` lines; the ids are ignored, file order is kept.
-std::vector<Site> parse_vdrc(const std::vector<Text_line>& lines, const std::string& name) {
+std::vector<Site> parse_vdrc(const std::vector<Text_line>& lines, const std::string& name,
+                             std::vector<std::size_t>& site_lines) {
   std::vector<Site> sites;
   bool have_count = false;
   unsigned long long count = 0;
@@ -77,6 +80,7 @@ std::vector<Site> parse_vdrc(const std::vector<Text_line>& lines, const std::str
     if (!is_integer(fields[0])) {
       throw Input_error(name, line.number, "not an integer id: '" + std::string(fields[0]) + "'");
     }
+    site_lines.push_back(line.number);
     sites.push_back({parse_number(fields[1], name, line.number), parse_number(fields[2], name, line.number),
                      parse_number(fields[3], name, line.number), parse_number(fields[4], name, line.number)});
   }
@@ -118,10 +122,17 @@ Site_input read_sites_from_text(const std::string& content, const std::string& n
 
   // The first data line decides, so that a malformed balls or vdrc file is reported at its bad line
   // rather than as an unknown format.
-  if (first_fields.size() == 1 && is_integer(first_fields[0])) return {parse_vdrc(lines, name), Input_format::vdrc, {}};
-  if (starts_like_number(first_fields[0])) return {parse_balls(lines, name), Input_format::balls, {}};
+  std::vector<std::size_t> site_lines;
+  if (first_fields.size() == 1 && is_integer(first_fields[0])) {
+    std::vector<Site> sites = parse_vdrc(lines, name, site_lines);
+    return {std::move(sites), Input_format::vdrc, {}, std::move(site_lines)};
+  }
+  if (starts_like_number(first_fields[0])) {
+    std::vector<Site> sites = parse_balls(lines, name, site_lines);
+    return {std::move(sites), Input_format::balls, {}, std::move(site_lines)};
+  }
   if (equals_ignoring_case(first_fields[0].substr(0, 5), "data_") || has_pdb_record(lines)) {
-    Site_input input{{}, Input_format::structure, {}};
+    Site_input input{{}, Input_format::structure, {}, {}};
     input.sites = read_structure(name, &content, options, options.atom_labels ? &input.labels : nullptr);
     return input;
   }
@@ -132,7 +143,7 @@ Site_input read_sites_from_text(const std::string& content, const std::string& n
 Site_input read_sites(const std::string& path, const Read_options& options) {
   if (path != "-" && is_structure_path(path)) {
     check_readable(path);  // the same "cannot open" error as for other inputs, before gemmi's own
-    Site_input input{{}, Input_format::structure, {}};
+    Site_input input{{}, Input_format::structure, {}, {}};
     input.sites = read_structure(path, nullptr, options, options.atom_labels ? &input.labels : nullptr);
     return input;
   }

@@ -20,11 +20,13 @@ struct Read_options {
 enum class Input_format { balls, vdrc, structure };
 
 // Invariant: sites is not empty, and sites[i] is the i-th ball or atom of the input, in input order;
-// labels[i] is the atom of sites[i] for a structure read with Read_options::atom_labels, else labels is empty.
+// labels[i] is the atom of sites[i] for a structure read with Read_options::atom_labels, else labels is
+// empty; lines is empty or has one entry per site.
 struct Site_input {
   std::vector<Site> sites;
   Input_format format;
   std::vector<Atom_label> labels;
+  std::vector<std::size_t> lines;  // the 1-based line of each site in balls and vdrc text; empty for structures
 };
 
 // Structure files are recognised by extension (.pdb .ent .cif .mmcif, each optionally .gz); anything else

@@ -1,0 +1,73 @@
+// The centroidal Apollonius diagram in a box (paper section 7): sites at the geometric medians of their
+// cells, weights such that each cell holds its target volume, a stationary point of E4 (eq. 41, energy.h).
+//
+// The loop, one iteration:
+//  1. Weight step at fixed sites: Newton's direction for the concave E4, halved until accepted
+//     (weight_step.h: E4 never decreases, up to quadrature error).
+//  2. Stop if, at the accepted weights, every cell's relative volume error |M_i - m_i| / M_i and every
+//     median residual |G_i| / m_i (median_step.h), each plus its quadrature error estimate, are at most
+//     the tolerance.
+//  3. Site step: one Newton step toward each cell's geometric median, halved while it would hide a site
+//     or nearly empty a cell, shortened where it would leave the domain.
+// Every diagram is the certified one; the integrals are cubatures (measure/cell_measures.h) whose
+// tolerance follows the errors down to tolerance / 20, so that the stopping rule, which adds the
+// estimates, can be met. Degenerate situations are handled and reported, never dropped: a site hidden by
+// the input weights (all weights are then reset to 0, where every cell has a volume), a step that would
+// leave the domain, a step that would hide a site or empty a cell, a weight step found nowhere.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "predicates/axis_box.h"
+#include "predicates/site.h"
+
+namespace apollonius {
+
+// Bad parameters (a mass that is not positive, masses not summing to 1, the wrong number of masses, a site
+// outside the domain, two sites at one centre, a degenerate domain). site is the 0-based site or mass the
+// message is about, or -1.
+struct Centroidal_parameter_error : std::invalid_argument {
+  Centroidal_parameter_error(const std::string& message, long site) : std::invalid_argument(message), site(site) {}
+  long site;
+};
+
+// One row of the history, at the end of an iteration.
+struct Centroidal_iteration {
+  int iteration;                  // 1-based
+  double energy_before;           // E4 before the weight step (sites and weights of the iteration's start)
+  double energy;                  // E4 after it (the state the stopping rule judged)
+  double energy_error;            // the quadrature error estimates of the E4 values, added
+  double mass_error;              // max_i (|M_i - m_i| + e_i) / M_i after the weight step
+  double median_error;            // max_i (|G_i| + e_G) / m_i after the weight step
+  double largest_move;            // the longest site step taken (0 on the last iteration when converged)
+  int weight_retries;             // weight steps tried and refused before those accepted
+  double seconds;                 // since the start
+};
+
+struct Centroidal_options {
+  double tolerance = 1e-6;
+  int max_iterations = 100;
+  int threads = 1;
+  bool move_sites = true;  // false: only the weights (a capacity-constrained diagram of fixed sites)
+  std::function<void(const Centroidal_iteration&)> on_iteration;  // called after each iteration
+  std::function<void(const std::string&)> on_report;              // each degenerate situation, as it happens
+};
+
+struct Centroidal_result {
+  std::vector<Site> sites;  // the final centres and weights
+  bool converged = false;
+  std::vector<Centroidal_iteration> history;
+  std::vector<std::string> reports;
+  std::vector<double> volumes;  // of the final cells
+  std::size_t evaluations = 0;  // diagrams and cubatures computed
+};
+
+// Target volumes as fractions of the domain's volume (positive, summing to 1 within 1e-9). Throws
+// Centroidal_parameter_error on bad parameters.
+Centroidal_result centroidal_diagram(const std::vector<Site>& sites, const std::vector<double>& mass_fractions,
+                                     const Axis_box& domain, const Centroidal_options& options = {});
+
+}  // namespace apollonius

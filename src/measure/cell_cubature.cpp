@@ -1,0 +1,607 @@
+#include "measure/cell_cubature.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "measure/direction_range.h"
+#include "measure/gauss_kronrod_rule.h"
+
+namespace apollonius {
+namespace {
+
+// Integrands: volume, distance, direction x y z (these five have their errors estimated and controlled),
+// then the median Hessian xx yy zz xy xz yz.
+constexpr int kComponents = 11, kControlled = 5;
+using Values = std::array<double, kComponents>;
+using Errors = std::array<double, kControlled>;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The inner integrals' share of the error budget.
+constexpr double kInnerShare = 0.1;
+// Panels per cell beyond which every panel is accepted as it is (reached_tolerance is then false when
+// the estimates miss the target): the bisections cannot multiply without bound.
+constexpr std::size_t kMaxPanels = 20000;
+// Events are bracketed to this width in b: the bracket's two-point rule then errs by about its width
+// squared times the jump in the slope of the line integrals, far below any tolerance, and the smooth
+// panels beside it end where the (b - b*)^(3/2) terms are smoothed by the substitution.
+constexpr double kEventWidth = 1e-6;
+// Signatures sampled per face before the bisections.
+constexpr int kFaceSamples = 3;
+
+// Thrown when a ray's exit reaches the clearance: the cell needs more candidates.
+struct Clearance_exceeded {};
+
+// QUADPACK's estimate of a Gauss-Kronrod value's error (R. Piessens et al., QUADPACK, 1983, routine
+// qk15): the difference d = |Kronrod - Gauss| estimates the Gauss value's error, which for smooth
+// integrands is far larger than the Kronrod value's; it is scaled by the variation of the integrand
+// (resasc, the integral of |f - its mean|) as resasc min(1, (200 d / resasc)^1.5).
+double kronrod_error(double difference, double resasc) {
+  if (resasc == 0 || difference == 0) return difference;
+  const double ratio = std::min(1.0, 200 * difference / resasc);
+  return resasc * ratio * std::sqrt(ratio);
+}
+
+// One candidate exit along the rays: a cut (radial_cut.h), or a plane of the box: tau = h / p[axis], valid
+// where sign p[axis] > 0.
+struct Exit {
+  int cut;  // index into the candidates' cuts, or -1 for a plane
+  int axis;
+  double h;
+  int sign;
+};
+
+// The rays of face `face` at outer coordinate b: p(a) = q + a e, |p|^2 = s2 + a^2 (cell_cubature.h).
+struct Face_line {
+  int face, inner_axis;
+  Vector3 q;
+  double s2;
+  std::vector<int> live;  // the exits that can be the least somewhere on the line
+  Vector3 at(double a) const {
+    Vector3 p = q;
+    p[inner_axis] += a;
+    return p;
+  }
+};
+
+// Invariant: pieces cover [-1, 1] in order; exit -1 marks a piece whose exit is taken as the least of all
+// (the walk gave up or a check failed).
+struct Piece {
+  double a0, a1;
+  int exit;
+};
+
+struct Line_result {
+  Values value{};
+  Errors error{};
+  std::vector<std::pair<int, double>> derivatives;  // (cut, integral of tau^2 d tau / d alpha)
+};
+
+class Cell_integrator {
+ public:
+  Cell_integrator(const Site& site, const Cut_candidates& candidates, const Axis_box& box,
+                  const Cell_cubature_options& options)
+      : centre_{site.x, site.y, site.z}, candidates_(candidates), box_(box), options_(options),
+        inner_(make_gauss_kronrod_rule<15>()), outer_(make_gauss_kronrod_rule<15>()),
+        derivative_total_(candidates.cuts.size(), 0.0) {
+    for (std::size_t c = 0; c < candidates.cuts.size(); ++c) exits_.push_back({static_cast<int>(c), 0, 0, 0});
+    for (int axis = 0; axis < 3; ++axis) {
+      exits_.push_back({-1, axis, box.hi[axis] - centre_[axis], 1});
+      exits_.push_back({-1, axis, box.lo[axis] - centre_[axis], -1});
+    }
+  }
+
+  Cell_cubature_result run() {
+    Cell_cubature_result result;
+    std::vector<int> all(exits_.size());
+    for (std::size_t k = 0; k < exits_.size(); ++k) all[k] = static_cast<int>(k);
+    for (int face = 0; face < 6; ++face) prune({face, -1, 1, -1, 1}, all, face_live_[face]);
+    try {
+      estimate_scales();
+      for (int face = 0; face < 6; ++face) integrate_face(face);
+    } catch (const Clearance_exceeded&) {
+      result.clearance_exceeded = true;
+      result.largest_exit = largest_exit_;
+      return result;
+    }
+    Cell_measure& m = result.measure;
+    m.volume = total_[0], m.volume_error = total_error_[0];
+    m.distance_integral = total_[1], m.distance_error = total_error_[1];
+    m.direction_integral = {total_[2], total_[3], total_[4]};
+    m.direction_error = total_error_[2] + total_error_[3] + total_error_[4];
+    for (int h = 0; h < 6; ++h) m.median_hessian[h] = total_[5 + h];
+    for (std::size_t c = 0; c < derivative_total_.size(); ++c)
+      if (derivative_total_[c] != 0) m.volume_derivatives.push_back({candidates_.cuts[c].site, derivative_total_[c]});
+    std::sort(m.volume_derivatives.begin(), m.volume_derivatives.end());
+    m.directions = rays_;
+    m.cut_candidates = candidates_.cuts.size();
+    m.reached_tolerance = reached_;
+    result.largest_exit = largest_exit_;
+    return result;
+  }
+
+ private:
+  // ---- exits along one line ----
+
+  Face_line line(int face, double b, const std::vector<int>& from) const {
+    const int axis = face / 2;
+    Face_line l;
+    l.face = face;
+    l.inner_axis = (axis + 1) % 3;
+    l.q = {0, 0, 0};
+    l.q[axis] = face % 2 == 0 ? 1 : -1;
+    l.q[(axis + 2) % 3] = b;
+    l.s2 = 1 + b * b;
+    prune_line(l, from);
+    return l;
+  }
+
+  // The range of the distance t = tau |p| of exit x over the rectangle's directions, (inf, inf) where it
+  // never bounds them. For a cut, t = c / (2 (alpha - u.D)); for a plane, t = |h| |p| / |p_m| on the side
+  // where it is valid.
+  std::pair<double, double> distance_range(const Face_rectangle& r, const Exit& x) const {
+    if (x.cut >= 0) return cut_distance_range(candidates_.cuts[x.cut], r);
+    const int axis = r.face / 2;
+    const auto square_range = [](double lo, double hi) {
+      const double m = std::max(lo * lo, hi * hi);
+      return std::pair<double, double>{lo <= 0 && hi >= 0 ? 0 : std::min(lo * lo, hi * hi), m};
+    };
+    const auto [a2_low, a2_high] = square_range(r.a0, r.a1);
+    const auto [b2_low, b2_high] = square_range(r.b0, r.b1);
+    const double h = std::fabs(x.h);
+    if (x.axis == axis) {
+      if (x.sign * (r.face % 2 == 0 ? 1 : -1) < 0) return {kInfinity, kInfinity};
+      return {h * std::sqrt(1 + a2_low + b2_low), h * std::sqrt(1 + a2_high + b2_high)};
+    }
+    // p_m is a (the inner axis) or b (the outer one); the other coordinate is the free one.
+    const bool inner = x.axis == (axis + 1) % 3;
+    const double lo = inner ? r.a0 : r.b0, hi = inner ? r.a1 : r.b1;
+    const double other2_low = inner ? b2_low : a2_low, other2_high = inner ? b2_high : a2_high;
+    // The valid part of [lo, hi]: x.sign p_m > 0.
+    const double valid_lo = x.sign > 0 ? std::max(lo, 0.0) : lo, valid_hi = x.sign > 0 ? hi : std::min(hi, 0.0);
+    if (!(valid_lo < valid_hi) && !(valid_lo == valid_hi && valid_lo != 0)) return {kInfinity, kInfinity};
+    const double far = std::max(std::fabs(valid_lo), std::fabs(valid_hi)), near = std::min(std::fabs(valid_lo), std::fabs(valid_hi));
+    const bool everywhere = x.sign > 0 ? lo > 0 : hi < 0;
+    return {h * std::sqrt(1 + far * far + other2_low) / far,
+            everywhere ? h * std::sqrt(1 + near * near + other2_high) / near : kInfinity};
+  }
+
+  // prune() for the rays of one line, with the cuts' ranges in closed form: u.D = (c0 + c1 a) / sqrt(s2 +
+  // a^2) over a in [-1, 1] is extreme at the ends or at a = c1 s2 / c0, where it is +-sqrt(c0^2 / s2 + c1^2).
+  void prune_line(Face_line& l, const std::vector<int>& from) const {
+    ranges_.resize(exits_.size());
+    const double inverse_end = 1 / std::sqrt(l.s2 + 1);
+    double ceiling = kInfinity;
+    for (int k : from) {
+      const Exit& x = exits_[k];
+      if (x.cut < 0) {
+        ranges_[k] = distance_range({l.face, -1, 1, l.q[(l.face / 2 + 2) % 3], l.q[(l.face / 2 + 2) % 3]}, x);
+      } else {
+        const Radial_cut& cut = candidates_.cuts[x.cut];
+        const double c0 = dot(l.q, cut.offset), c1 = cut.offset[l.inner_axis];
+        double low = (c0 - std::fabs(c1)) * inverse_end, high = (c0 + std::fabs(c1)) * inverse_end;
+        if (c0 != 0 && std::fabs(c1 * l.s2) < std::fabs(c0)) {
+          const double extreme = std::sqrt(c0 * c0 / l.s2 + c1 * c1);
+          if (c0 > 0) high = extreme; else low = -extreme;
+        }
+        const double alpha = cut.weight_step;
+        ranges_[k] = alpha - low <= 0 ? std::pair<double, double>{kInfinity, kInfinity}
+                                      : std::pair<double, double>{cut.numerator / (2 * (alpha - low)),
+                                                                  alpha - high > 0 ? cut.numerator / (2 * (alpha - high)) : kInfinity};
+      }
+      ceiling = std::min(ceiling, ranges_[k].second);
+    }
+    ceiling *= 1 + 1e-9;
+    l.live.clear();
+    for (int k : from)
+      if (ranges_[k].first * (1 - 1e-9) <= ceiling) l.live.push_back(k);
+  }
+
+  // Keeps, of `from`, the exits whose least distance over the rectangle is at most the least of all their
+  // greatest distances: the others are never the least exit there. (Margins of 1e-9 cover the rounding of
+  // the ranges.)
+  void prune(const Face_rectangle& r, const std::vector<int>& from, std::vector<int>& live) const {
+    ranges_.resize(exits_.size());
+    double ceiling = kInfinity;
+    for (int k : from) {
+      ranges_[k] = distance_range(r, exits_[k]);
+      ceiling = std::min(ceiling, ranges_[k].second);
+    }
+    ceiling *= 1 + 1e-9;
+    live.clear();
+    for (int k : from)
+      if (ranges_[k].first * (1 - 1e-9) <= ceiling) live.push_back(k);
+  }
+
+  // tau of exit x along p, +infinity where it does not bound the ray.
+  double tau(const Exit& x, const Vector3& p, double p_norm) const {
+    if (x.cut >= 0) {
+      const Radial_cut& cut = candidates_.cuts[x.cut];
+      const double denominator = cut.denominator(p, p_norm);
+      return denominator > 0 ? cut.numerator / (2 * denominator) : kInfinity;
+    }
+    return x.sign * p[x.axis] > 0 ? x.h / p[x.axis] : kInfinity;
+  }
+
+  int least_exit(const Face_line& l, const Vector3& p, double p_norm, double* least = nullptr) const {
+    int best = -1;
+    double best_tau = kInfinity;
+    for (int k : l.live) {
+      const double t = tau(exits_[k], p, p_norm);
+      if (t < best_tau) best_tau = t, best = k;
+    }
+    if (least) *least = best_tau;
+    return best;
+  }
+
+  // Where exits f and g tie along the line: |p| A = p.V (for two cuts, a cut and a plane, two planes; see
+  // the derivation in cell_cubature.h), squared into a quadratic in a; roots where A and p.V differ in
+  // sign come from the squaring and are dropped. Appends the roots in (lo, hi).
+  void ties(const Face_line& l, const Exit& f, const Exit& g, double lo, double hi, double* roots, int& count) const {
+    double A;
+    Vector3 V;
+    if (f.cut >= 0 && g.cut >= 0) {
+      const Radial_cut &j = candidates_.cuts[f.cut], &k = candidates_.cuts[g.cut];
+      A = j.numerator * k.weight_step - k.numerator * j.weight_step;
+      for (int a = 0; a < 3; ++a) V[a] = j.numerator * k.offset[a] - k.numerator * j.offset[a];
+    } else if (f.cut >= 0 || g.cut >= 0) {
+      const Exit& plane = f.cut >= 0 ? g : f;
+      const Radial_cut& j = candidates_.cuts[f.cut >= 0 ? f.cut : g.cut];
+      A = 2 * plane.h * j.weight_step;
+      for (int a = 0; a < 3; ++a) V[a] = 2 * plane.h * j.offset[a];
+      V[plane.axis] += j.numerator;
+    } else {
+      A = 0;
+      V = {0, 0, 0};
+      V[g.axis] += f.h;
+      V[f.axis] -= g.h;
+    }
+    const double b0 = dot(l.q, V), b1 = V[l.inner_axis];
+    const auto keep = [&](double r) {
+      if (r > lo && r < hi && A * (b0 + b1 * r) >= 0) roots[count++] = r;
+    };
+    if (A == 0) {
+      if (b1 != 0) keep(-b0 / b1);
+      return;
+    }
+    const double qa = A * A - b1 * b1, qb = -2 * b0 * b1, qc = A * A * l.s2 - b0 * b0;
+    if (std::fabs(qa) <= 1e-14 * (A * A + b1 * b1)) {
+      if (qb != 0) keep(-qc / qb);
+      return;
+    }
+    const double discriminant = qb * qb - 4 * qa * qc;
+    if (discriminant < 0) return;
+    const double t = -0.5 * (qb + std::copysign(std::sqrt(discriminant), qb));
+    if (t != 0) keep(qc / t);
+    keep(t / qa);
+  }
+
+  // The pieces of the line: the least exit and where it changes, walking from a = -1 to 1 through the
+  // ties of the current least exit with every other (a kinetic lower envelope). Each step moves right by
+  // at least 1e-13, and a line whose pieces outnumber any real envelope's gives up into one checked piece.
+  void walk(const Face_line& l, std::vector<Piece>& pieces) const {
+    pieces.clear();
+    const auto least_at = [&](double a) {
+      const Vector3 p = l.at(a);
+      return least_exit(l, p, std::sqrt(l.s2 + a * a));
+    };
+    double a = -1;
+    int current = least_at(-1 + 1e-9);
+    const std::size_t limit = 4 * l.live.size() + 8;
+    double roots[2];
+    while (pieces.size() < limit) {
+      double next = 1;
+      for (int k : l.live) {
+        if (k == current) continue;
+        int count = 0;
+        ties(l, exits_[current], exits_[k], a + 1e-13, next, roots, count);
+        for (int r = 0; r < count; ++r) {
+          const Vector3 p = l.at(roots[r]);
+          const double p_norm = std::sqrt(l.s2 + roots[r] * roots[r]);
+          if (tau(exits_[k], p, p_norm) < kInfinity && tau(exits_[current], p, p_norm) < kInfinity)
+            next = std::min(next, roots[r]);
+        }
+      }
+      if (!pieces.empty() && pieces.back().exit == current)
+        pieces.back().a1 = next;
+      else
+        pieces.push_back({a, next, current});
+      if (next >= 1) return;
+      a = next;
+      current = least_at(std::min(next + 1e-10, 0.5 * (next + 1)));
+    }
+    pieces.back().a1 = a;  // gave up: the rest is one piece, least exit at every node
+    pieces.push_back({a, 1, -1});
+  }
+
+  // What the outer rule compares: the exits of the pieces, in order.
+  std::vector<int> signature(int face, double b, const std::vector<int>& from) {
+    std::vector<int> s;
+    walk(line(face, b, from), pieces_);
+    for (const Piece& p : pieces_)  // pieces shorter than the roots' rounding are not part of it
+      if (p.a1 - p.a0 > 1e-12 && (s.empty() || s.back() != p.exit)) s.push_back(p.exit);
+    return s;
+  }
+
+  // ---- integrands ----
+
+  // Adds the integrands at a of line l, times weight, into v; the exit is `exit`, or the least when -1.
+  // Returns the cut that is the exit (-1 for a plane) and sets derivative to weight tau^2 d tau / d alpha.
+  int add_node(const Face_line& l, double a, int exit, double weight, Values& v, double& derivative) {
+    const Vector3 p = l.at(a);
+    const double p_norm = std::sqrt(l.s2 + a * a);
+    double t;
+    if (exit < 0)
+      exit = least_exit(l, p, p_norm, &t);
+    else
+      t = tau(exits_[exit], p, p_norm);
+    ++rays_;
+    const double distance = t * p_norm;
+    largest_exit_[l.face] = std::max(largest_exit_[l.face], distance);
+    if (distance * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
+    const double t2 = t * t, t3 = t2 * t;
+    v[0] += weight * t3 / 3;
+    v[1] += weight * t3 * t * p_norm / 4;
+    const double g = weight * t3 / (3 * p_norm);
+    v[2] += g * p[0], v[3] += g * p[1], v[4] += g * p[2];
+    const double radial = weight * t2 / (2 * p_norm), inverse_norm2 = 1 / (p_norm * p_norm);
+    v[5] += radial * (1 - p[0] * p[0] * inverse_norm2);
+    v[6] += radial * (1 - p[1] * p[1] * inverse_norm2);
+    v[7] += radial * (1 - p[2] * p[2] * inverse_norm2);
+    v[8] -= radial * p[0] * p[1] * inverse_norm2;
+    v[9] -= radial * p[0] * p[2] * inverse_norm2;
+    v[10] -= radial * p[1] * p[2] * inverse_norm2;
+    const int cut = exits_[exit].cut;
+    derivative = 0;
+    if (cut >= 0) {
+      const Radial_cut& c = candidates_.cuts[cut];
+      derivative = weight * t2 * c.tau_derivative(p, p_norm, c.denominator(p, p_norm));
+    }
+    return cut;
+  }
+
+  // One piece of a line by Gauss-Kronrod 7/15, halved while its volume error estimate exceeds its share
+  // of the inner budget.
+  void integrate_piece(const Face_line& l, double a0, double a1, int exit, int depth, Line_result& out) {
+    const double half = 0.5 * (a1 - a0), middle = 0.5 * (a0 + a1);
+    Values kronrod{}, gauss{};
+    std::array<std::pair<int, double>, 31> derivatives;
+    std::array<Errors, 31> controlled;
+    std::size_t derivative_count = 0;
+    for (std::size_t k = 0; k < inner_.node.size(); ++k) {
+      Values v{};
+      double derivative;
+      const int cut = add_node(l, middle + half * inner_.node[k], exit, 1, v, derivative);
+      if (cut >= 0) derivatives[derivative_count++] = {cut, half * inner_.kronrod[k] * derivative};
+      for (int c = 0; c < kComponents; ++c) kronrod[c] += inner_.kronrod[k] * v[c], gauss[c] += inner_.gauss[k] * v[c];
+      for (int c = 0; c < kControlled; ++c) controlled[k][c] = v[c];
+    }
+    Errors error;
+    for (int c = 0; c < kControlled; ++c) {
+      double resasc = 0;
+      for (std::size_t k = 0; k < inner_.node.size(); ++k) resasc += inner_.kronrod[k] * std::fabs(controlled[k][c] - 0.5 * kronrod[c]);
+      error[c] = kronrod_error(half * std::fabs(kronrod[c] - gauss[c]), half * resasc);
+    }
+    if (!within_budget(error, a1 - a0, kInnerShare) && depth < 16 && a1 - a0 > 1e-12) {
+      integrate_piece(l, a0, middle, exit, depth + 1, out);
+      integrate_piece(l, middle, a1, exit, depth + 1, out);
+      return;
+    }
+    for (int c = 0; c < kComponents; ++c) out.value[c] += half * kronrod[c];
+    for (int c = 0; c < kControlled; ++c) out.error[c] += error[c];
+    for (std::size_t d = 0; d < derivative_count; ++d) {
+      if (!out.derivatives.empty() && out.derivatives.back().first == derivatives[d].first)
+        out.derivatives.back().second += derivatives[d].second;
+      else
+        out.derivatives.push_back(derivatives[d]);
+    }
+  }
+
+  // The integrals along the line at b: its pieces, each checked at its middle (the least exit there must
+  // be the piece's, else the piece is integrated with the least exit at every node).
+  Line_result integrate_line(int face, double b, const std::vector<int>& from) {
+    const Face_line l = line(face, b, from);
+    std::vector<Piece> pieces;
+    walk(l, pieces);
+    Line_result result;
+    for (const Piece& piece : pieces) {
+      int exit = piece.exit;
+      if (exit >= 0) {
+        const double a = 0.5 * (piece.a0 + piece.a1);
+        const Vector3 p = l.at(a);
+        const double p_norm = std::sqrt(l.s2 + a * a);
+        double least;
+        least_exit(l, p, p_norm, &least);
+        if (least < tau(exits_[exit], p, p_norm) * (1 - 1e-12)) exit = -1;
+      }
+      if (exit >= 0 && exits_[exit].cut < 0 && exits_[exit].axis != l.inner_axis)
+        integrate_flat_piece(l, piece.a0, piece.a1, exits_[exit], result);
+      else
+        integrate_piece(l, piece.a0, piece.a1, exit, 0, result);
+    }
+    return result;
+  }
+
+  // A piece whose exit is a plane of the box across the line (the face's own axis, or the outer one):
+  // tau = h / p_m is a constant T there, and with P = |p| = sqrt(s2 + a^2), A = asinh(a / sqrt(s2)) the
+  // integrals are closed forms: volume T^3 / 3 [a], distance T^4 / 4 [a P + s2 A] / 2, direction
+  // T^3 / 3 (q [A] + e [P]), Hessian T^2 / 2 (I [A] - q q^T [a / (s2 P)] + (q e^T + e q^T) [1 / P]
+  // - e e^T [A - a / P]), where p = q + a e. Exact but for rounding: no error estimate to add.
+  void integrate_flat_piece(const Face_line& l, double a0, double a1, const Exit& plane, Line_result& out) {
+    const double T = plane.h / l.q[plane.axis], s = std::sqrt(l.s2);
+    const double P0 = std::sqrt(l.s2 + a0 * a0), P1 = std::sqrt(l.s2 + a1 * a1);
+    const double farthest = T * std::max(P0, P1);
+    largest_exit_[l.face] = std::max(largest_exit_[l.face], farthest);
+    if (farthest * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
+    rays_ += 2;
+    const double dA = std::asinh(a1 / s) - std::asinh(a0 / s), dP = P1 - P0;
+    const double T2 = T * T, T3 = T2 * T;
+    out.value[0] += T3 / 3 * (a1 - a0);
+    out.value[1] += T3 * T / 8 * (a1 * P1 - a0 * P0 + l.s2 * dA);
+    Vector3 g;
+    for (int c = 0; c < 3; ++c) g[c] = l.q[c] * dA;
+    g[l.inner_axis] += dP;
+    for (int c = 0; c < 3; ++c) out.value[2 + c] += T3 / 3 * g[c];
+    const double qq = a1 / (l.s2 * P1) - a0 / (l.s2 * P0), qe = 1 / P1 - 1 / P0, ee = dA - (a1 / P1 - a0 / P0);
+    Vector3 e{0, 0, 0};
+    e[l.inner_axis] = 1;
+    const auto entry = [&](int i, int j) {
+      return 0.5 * T2 * ((i == j ? dA : 0.0) - l.q[i] * l.q[j] * qq + (l.q[i] * e[j] + e[i] * l.q[j]) * qe - e[i] * e[j] * ee);
+    };
+    out.value[5] += entry(0, 0), out.value[6] += entry(1, 1), out.value[7] += entry(2, 2);
+    out.value[8] += entry(0, 1), out.value[9] += entry(0, 2), out.value[10] += entry(1, 2);
+  }
+
+  // ---- the outer integral over b ----
+
+  void accept(const Values& value, const Errors& error, const std::vector<std::pair<int, double>>& derivatives) {
+    for (int c = 0; c < kComponents; ++c) total_[c] += value[c];
+    for (int c = 0; c < kControlled; ++c) total_error_[c] += error[c];
+    for (const auto& [cut, d] : derivatives) derivative_total_[cut] += d;
+  }
+
+  // Whether the errors of a panel (or inner piece) of the given width stay within share x its budget.
+  bool within_budget(const Errors& e, double width, double share = 1) const {
+    const double volume = share * volume_budget_ * width;
+    return e[0] <= volume && e[1] <= share * distance_budget_ * width && e[2] + e[3] + e[4] <= volume;
+  }
+
+  // Gauss-Kronrod 15/31 over [l, r] in s, b = l + (r - l)(3 s^2 - 2 s^3): the substitution's derivative
+  // vanishes at both ends, which turns the (b - b*)^(1/2) and ^(3/2) behaviour at a located event into
+  // smooth functions of s.
+  bool panel(int face, double l, double r, bool force, const std::vector<int>& from) {
+    Values kronrod{}, gauss{};
+    Errors inner{};
+    std::array<Errors, 31> controlled{};
+    std::vector<std::pair<int, double>> derivatives;
+    for (std::size_t k = 0; k < outer_.node.size(); ++k) {
+      const double s = 0.5 * (1 + outer_.node[k]);
+      const double b = l + (r - l) * s * s * (3 - 2 * s), jacobian = 0.5 * (r - l) * 6 * s * (1 - s);
+      if (jacobian == 0) continue;
+      const Line_result line_result = integrate_line(face, b, from);
+      for (int c = 0; c < kComponents; ++c) {
+        kronrod[c] += outer_.kronrod[k] * jacobian * line_result.value[c];
+        gauss[c] += outer_.gauss[k] * jacobian * line_result.value[c];
+      }
+      for (int c = 0; c < kControlled; ++c) controlled[k][c] = jacobian * line_result.value[c];
+      for (int c = 0; c < kControlled; ++c) inner[c] += outer_.kronrod[k] * jacobian * line_result.error[c];
+      for (const auto& [cut, d] : line_result.derivatives)
+        derivatives.push_back({cut, outer_.kronrod[k] * jacobian * d});
+    }
+    Errors error;
+    for (int c = 0; c < kControlled; ++c) {
+      double resasc = 0;  // in units of the rule on [-1, 1], like kronrod and gauss here
+      for (std::size_t k = 0; k < outer_.node.size(); ++k)
+        resasc += outer_.kronrod[k] * std::fabs(controlled[k][c] - 0.5 * kronrod[c]);
+      error[c] = kronrod_error(std::fabs(kronrod[c] - gauss[c]), resasc) + inner[c];
+    }
+    if (!force && !within_budget(error, r - l)) return false;
+    if (!within_budget(error, r - l)) reached_ = false;
+    accept(kronrod, error, derivatives);
+    return true;
+  }
+
+  // A bracket of width <= kEventWidth around an event: two-point Gauss, its error estimated by the
+  // variation across it.
+  void bracket(int face, double l, double r, const std::vector<int>& from) {
+    const double half = 0.5 * (r - l), middle = 0.5 * (l + r), x = half / std::sqrt(3.0);
+    const Line_result left = integrate_line(face, middle - x, from), right = integrate_line(face, middle + x, from);
+    Values value;
+    Errors error;
+    for (int c = 0; c < kComponents; ++c) value[c] = half * (left.value[c] + right.value[c]);
+    for (int c = 0; c < kControlled; ++c)
+      error[c] = half * (std::fabs(left.value[c] - right.value[c]) + left.error[c] + right.error[c]);
+    std::vector<std::pair<int, double>> derivatives;
+    for (const auto& [cut, d] : left.derivatives) derivatives.push_back({cut, half * d});
+    for (const auto& [cut, d] : right.derivatives) derivatives.push_back({cut, half * d});
+    accept(value, error, derivatives);
+  }
+
+  // [l, r] with the signatures at its ends. Where they differ, bisection on the signatures alone keeps
+  // the left end's signature at lo and a different one at hi, down to a bracket of width kEventWidth: the
+  // panel [l, lo] then has no event at either end, and the rest [hi, r] is treated alike. A smooth panel
+  // whose estimate misses its budget is halved, which also uncovers events that left the signatures at
+  // both ends equal.
+  void interval(int face, double l, double r, const std::vector<int>& left, const std::vector<int>& right, int depth,
+                const std::vector<int>& parent_live) {
+    // The exits that can be least on the strip [-1, 1] x [l, r]: the lines there prune from these.
+    std::vector<int> live;
+    prune({face, -1, 1, l, r}, parent_live, live);
+    if (left != right) {
+      double lo = l, hi = r;
+      std::vector<int> high = right, narrow = live;
+      for (int step = 1; hi - lo > kEventWidth; ++step) {
+        if (step % 4 == 0) {
+          const std::vector<int> wider = narrow;
+          prune({face, -1, 1, lo, hi}, wider, narrow);
+        }
+        const double m = 0.5 * (lo + hi);
+        std::vector<int> middle = signature(face, m, narrow);
+        if (middle == left)
+          lo = m;
+        else
+          hi = m, high = std::move(middle);
+      }
+      if (lo > l) interval(face, l, lo, left, left, depth + 1, live);
+      bracket(face, lo, hi, narrow);
+      if (hi < r) interval(face, hi, r, high, right, depth + 1, live);
+      return;
+    }
+    if (panel(face, l, r, depth >= 60 || r - l < 1e-12 || ++panels_ > kMaxPanels, live)) return;
+    const double m = 0.5 * (l + r);
+    const std::vector<int> middle = signature(face, m, live);
+    interval(face, l, m, left, middle, depth + 1, live);
+    interval(face, m, r, middle, right, depth + 1, live);
+  }
+
+  void integrate_face(int face) {
+    constexpr int kSamples = kFaceSamples;
+    std::vector<std::vector<int>> signatures;
+    for (int k = 0; k <= kSamples; ++k) signatures.push_back(signature(face, -1 + 2.0 * k / kSamples, face_live_[face]));
+    for (int k = 0; k < kSamples; ++k)
+      interval(face, -1 + 2.0 * k / kSamples, -1 + 2.0 * (k + 1) / kSamples, signatures[k], signatures[k + 1], 0,
+               face_live_[face]);
+  }
+
+  // Rough volume and distance integral (a midpoint rule over a few lines per face), which set the error
+  // budgets: tolerance x each, spread evenly over the 6 faces' outer coordinate b in [-1, 1].
+  void estimate_scales() {
+    volume_budget_ = distance_budget_ = kInfinity;
+    double volume = 0, distance = 0;
+    constexpr int kLines = 4;
+    for (int face = 0; face < 6; ++face)
+      for (int k = 0; k < kLines; ++k) {
+        const Line_result r = integrate_line(face, -1 + (2.0 * k + 1) / kLines, face_live_[face]);
+        volume += r.value[0] * 2.0 / kLines, distance += r.value[1] * 2.0 / kLines;
+      }
+    const double tolerance = options_.relative_tolerance, tiny = std::numeric_limits<double>::min();
+    volume_budget_ = std::max(tolerance * volume / 12, tiny);
+    distance_budget_ = std::max(tolerance * distance / 12, tiny);
+  }
+
+  const Vector3 centre_;
+  const Cut_candidates& candidates_;
+  const Axis_box& box_;
+  const Cell_cubature_options& options_;
+  const Gauss_kronrod_rule inner_, outer_;
+  std::vector<Exit> exits_;
+  std::vector<Piece> pieces_;
+  mutable std::vector<std::pair<double, double>> ranges_;
+  std::array<std::vector<int>, 6> face_live_;  // the exits that can be the least somewhere on each face
+  Values total_{};
+  Errors total_error_{};
+  std::vector<double> derivative_total_;
+  double volume_budget_ = 0, distance_budget_ = 0;
+  std::array<double, 6> largest_exit_{0, 0, 0, 0, 0, 0};
+  std::size_t rays_ = 0, panels_ = 0;
+  bool reached_ = true;
+};
+
+}  // namespace
+
+Cell_cubature_result integrate_cell(const Site& site, const Cut_candidates& candidates, const Axis_box& box,
+                                    const Cell_cubature_options& options) {
+  return Cell_integrator(site, candidates, box, options).run();
+}
+
+}  // namespace apollonius

@@ -1,0 +1,56 @@
+#include "measure/cell_measures.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "measure/cell_cubature.h"
+#include "measure/cut_candidates.h"
+
+namespace apollonius {
+
+std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Diagram& diagram,
+                                        const Axis_box& domain, const Measure_options& options) {
+  if (diagram.site_count != sites.size()) throw std::invalid_argument("measure_cells: diagram of other sites");
+  for (const Site& s : sites) {
+    const Vector3 x{s.x, s.y, s.z};
+    for (int a = 0; a < 3; ++a)
+      if (!(domain.lo[a] <= x[a] && x[a] <= domain.hi[a]))
+        throw std::invalid_argument("measure_cells: a site lies outside the domain");
+  }
+  std::vector<bool> active(sites.size(), true);
+  for (const Hidden_site& h : diagram.hidden) active[h.site] = false;
+  const std::vector<std::vector<Site_index>> neighbours = vertex_neighbours(diagram);
+  const Cell_cubature_options cubature{options.relative_tolerance};
+
+  std::vector<Cell_measure> measures(sites.size());
+  tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, sites.size(), [&](std::size_t i) {
+      if (!active[i]) return;
+      // Start from the vertex neighbours; while some ray reaches its face's clearance, take in every site
+      // that can come within 1.5 times the exits seen on some face. Terminates: each round takes in at
+      // least the site that set the clearance that was reached, and there are finitely many.
+      std::array<double, 6> reach{0, 0, 0, 0, 0, 0};
+      for (;;) {
+        const Cut_candidates candidates =
+            cut_candidates(sites, active, static_cast<Site_index>(i), neighbours[i], reach, domain);
+        Cell_cubature_result result = integrate_cell(sites[i], candidates, domain, cubature);
+        if (!result.clearance_exceeded) {
+          measures[i] = std::move(result.measure);
+          return;
+        }
+        for (int f = 0; f < 6; ++f) {
+          reach[f] = std::max(reach[f], 1.5 * result.largest_exit[f]);
+          if (result.largest_exit[f] * (1 + kClearanceMargin) >= candidates.clearance[f])
+            reach[f] = std::max(reach[f], candidates.clearance[f]);
+        }
+      }
+    });
+  });
+  return measures;
+}
+
+}  // namespace apollonius
