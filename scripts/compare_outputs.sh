@@ -8,8 +8,11 @@ cd "$(dirname "$0")/.."
 old=$1 new=$2 n=${3:-40}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-inputs=(examples/*.pdb tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/*.balls)
-for family in $("$new" generate --list | awk '{print $1}'); do
+# COMPARE_INPUTS (a glob list) replaces the bundled inputs, e.g. the ones an old binary already had.
+read -r -a inputs <<< "${COMPARE_INPUTS:-examples/*.pdb tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/*.balls}"
+inputs=($(eval echo "${inputs[*]}"))
+# The families both binaries know: a newer one may add families an old one cannot read.
+for family in $(comm -12 <("$old" generate --list | awk '{print $1}' | sort) <("$new" generate --list | awk '{print $1}' | sort)); do
   for seed in 1 2 3; do
     "$new" generate "$family" --n "$n" --seed "$seed" -o "$work/$family-$seed.balls"
     inputs+=("$work/$family-$seed.balls")
