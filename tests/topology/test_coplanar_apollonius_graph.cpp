@@ -10,6 +10,7 @@
 
 #include <CGAL/Apollonius_graph_2.h>
 #include <CGAL/Apollonius_graph_filtered_traits_2.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
@@ -29,7 +30,9 @@ using namespace apollonius;
 namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
-using Traits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
+// The exact stage in Gmpq rather than the default MP_Float, whose code shifts negative values (UBSan).
+using Traits = CGAL::Apollonius_graph_filtered_traits_2<Kernel, CGAL::Integral_domain_without_division_tag,
+                                                        CGAL::Simple_cartesian<CGAL::Gmpq>>;
 using Apollonius_graph = CGAL::Apollonius_graph_2<Traits>;
 using Triple = std::array<Site_index, 3>;
 
