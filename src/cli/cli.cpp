@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "cli/centroidal_command.h"
+#include "cli/contacts_command.h"
 #include "cli/certify_command.h"
 #include "cli/crosscheck_command.h"
 #include "cli/diagram_command.h"
@@ -49,6 +50,7 @@ int run_cli(const std::vector<std::string>& arguments, std::ostream& out, std::o
       {"crosscheck", add_crosscheck_command},
       {"generate", add_generate_command},
       {"centroidal", add_centroidal_command},
+      {"contacts", add_contacts_command},
   };
   std::vector<std::pair<CLI::App*, Command_run>> commands;
   for (const auto& [name, add] : registrations) {

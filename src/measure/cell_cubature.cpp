@@ -11,9 +11,11 @@
 namespace apollonius {
 namespace {
 
-// Integrands: volume, distance, direction x y z (these five have their errors estimated and controlled),
-// then the median Hessian xx yy zz xy xz yz.
-constexpr int kComponents = 11, kControlled = 5;
+// Integrands: volume, distance, direction x y z, the faces' area and the clipping sphere's (these seven
+// have their errors estimated and controlled; the areas are zero without a clip radius), then the median
+// Hessian xx yy zz xy xz yz.
+constexpr int kVolume = 0, kDistance = 1, kDirection = 2, kFaceArea = 5, kSphereArea = 6, kHessian = 7;
+constexpr int kComponents = 13, kControlled = 7;
 using Values = std::array<double, kComponents>;
 using Errors = std::array<double, kControlled>;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -42,10 +44,11 @@ double kronrod_error(double difference, double resasc) {
   return resasc * ratio * std::sqrt(ratio);
 }
 
-// One candidate exit along the rays: a cut (radial_cut.h), or a plane of the box: tau = h / p[axis], valid
-// where sign p[axis] > 0.
+// One candidate exit along the rays: a cut (radial_cut.h), a plane of the box: tau = h / p[axis], valid
+// where sign p[axis] > 0, or the clipping sphere: tau = h / |p|.
+constexpr int kPlane = -1, kSphere = -2;
 struct Exit {
-  int cut;  // index into the candidates' cuts, or -1 for a plane
+  int cut;  // index into the candidates' cuts, or kPlane, or kSphere
   int axis;
   double h;
   int sign;
@@ -71,10 +74,17 @@ struct Piece {
   int exit;
 };
 
+// What one cut contributes: the integrals of tau^2 d tau / d alpha and of its face's area element, and the
+// area's error estimate.
+struct Cut_integral {
+  int cut;
+  double derivative, area, area_error;
+};
+
 struct Line_result {
   Values value{};
   Errors error{};
-  std::vector<std::pair<int, double>> derivatives;  // (cut, integral of tau^2 d tau / d alpha)
+  std::vector<Cut_integral> cuts;  // runs of one cut may repeat; summed by cut where accepted
 };
 
 class Cell_integrator {
@@ -83,12 +93,15 @@ class Cell_integrator {
                   const Cell_cubature_options& options)
       : centre_{site.x, site.y, site.z}, candidates_(candidates), box_(box), options_(options),
         inner_(make_gauss_kronrod_rule<15>()), outer_(make_gauss_kronrod_rule<15>()),
-        derivative_total_(candidates.cuts.size(), 0.0) {
+        clipped_(std::isfinite(options.clip_radius)), derivative_total_(candidates.cuts.size(), 0.0),
+        area_total_(candidates.cuts.size(), 0.0), area_error_total_(candidates.cuts.size(), 0.0),
+        panel_kronrod_(candidates.cuts.size(), 0.0), panel_gauss_(candidates.cuts.size(), 0.0) {
     for (std::size_t c = 0; c < candidates.cuts.size(); ++c) exits_.push_back({static_cast<int>(c), 0, 0, 0});
     for (int axis = 0; axis < 3; ++axis) {
-      exits_.push_back({-1, axis, box.hi[axis] - centre_[axis], 1});
-      exits_.push_back({-1, axis, box.lo[axis] - centre_[axis], -1});
+      exits_.push_back({kPlane, axis, box.hi[axis] - centre_[axis], 1});
+      exits_.push_back({kPlane, axis, box.lo[axis] - centre_[axis], -1});
     }
+    if (clipped_) exits_.push_back({kSphere, 0, options.clip_radius, 0});
   }
 
   Cell_cubature_result run() {
@@ -105,14 +118,20 @@ class Cell_integrator {
       return result;
     }
     Cell_measure& m = result.measure;
-    m.volume = total_[0], m.volume_error = total_error_[0];
-    m.distance_integral = total_[1], m.distance_error = total_error_[1];
-    m.direction_integral = {total_[2], total_[3], total_[4]};
-    m.direction_error = total_error_[2] + total_error_[3] + total_error_[4];
-    for (int h = 0; h < 6; ++h) m.median_hessian[h] = total_[5 + h];
-    for (std::size_t c = 0; c < derivative_total_.size(); ++c)
+    m.volume = total_[kVolume], m.volume_error = total_error_[kVolume];
+    m.distance_integral = total_[kDistance], m.distance_error = total_error_[kDistance];
+    m.direction_integral = {total_[kDirection], total_[kDirection + 1], total_[kDirection + 2]};
+    m.direction_error = total_error_[kDirection] + total_error_[kDirection + 1] + total_error_[kDirection + 2];
+    for (int h = 0; h < 6; ++h) m.median_hessian[h] = total_[kHessian + h];
+    for (std::size_t c = 0; c < derivative_total_.size(); ++c) {
       if (derivative_total_[c] != 0) m.volume_derivatives.push_back({candidates_.cuts[c].site, derivative_total_[c]});
+      if (clipped_ && area_total_[c] != 0)
+        m.contact_areas.push_back({candidates_.cuts[c].site, area_total_[c], area_error_total_[c]});
+    }
     std::sort(m.volume_derivatives.begin(), m.volume_derivatives.end());
+    std::sort(m.contact_areas.begin(), m.contact_areas.end(),
+              [](const Cell_measure::Face_area& x, const Cell_measure::Face_area& y) { return x.site < y.site; });
+    m.sphere_area = total_[kSphereArea], m.sphere_area_error = total_error_[kSphereArea];
     m.directions = rays_;
     m.cut_candidates = candidates_.cuts.size();
     m.reached_tolerance = reached_;
@@ -141,6 +160,7 @@ class Cell_integrator {
   // where it is valid.
   std::pair<double, double> distance_range(const Face_rectangle& r, const Exit& x) const {
     if (x.cut >= 0) return cut_distance_range(candidates_.cuts[x.cut], r);
+    if (x.cut == kSphere) return {x.h, x.h};
     const int axis = r.face / 2;
     const auto square_range = [](double lo, double hi) {
       const double m = std::max(lo * lo, hi * hi);
@@ -174,7 +194,7 @@ class Cell_integrator {
     double ceiling = kInfinity;
     for (int k : from) {
       const Exit& x = exits_[k];
-      if (x.cut < 0) {
+      if (x.cut < 0) {  // a plane or the sphere
         ranges_[k] = distance_range({l.face, -1, 1, l.q[(l.face / 2 + 2) % 3], l.q[(l.face / 2 + 2) % 3]}, x);
       } else {
         const Radial_cut& cut = candidates_.cuts[x.cut];
@@ -220,6 +240,7 @@ class Cell_integrator {
       const double denominator = cut.denominator(p, p_norm);
       return denominator > 0 ? cut.numerator / (2 * denominator) : kInfinity;
     }
+    if (x.cut == kSphere) return x.h / p_norm;
     return x.sign * p[x.axis] > 0 ? x.h / p[x.axis] : kInfinity;
   }
 
@@ -234,13 +255,27 @@ class Cell_integrator {
     return best;
   }
 
-  // Where exits f and g tie along the line: |p| A = p.V (for two cuts, a cut and a plane, two planes; see
-  // the derivation in cell_cubature.h), squared into a quadratic in a; roots where A and p.V differ in
-  // sign come from the squaring and are dropped. Appends the roots in (lo, hi).
+  // Where exits f and g tie along the line: |p| A = p.V (for two cuts, a cut and a plane, two planes, the
+  // sphere and a cut or a plane; see the derivations in cell_cubature.h), squared into a quadratic in a;
+  // roots where A and p.V differ in sign come from the squaring and are dropped. Appends the roots in
+  // (lo, hi).
   void ties(const Face_line& l, const Exit& f, const Exit& g, double lo, double hi, double* roots, int& count) const {
     double A;
     Vector3 V;
-    if (f.cut >= 0 && g.cut >= 0) {
+    if (f.cut == kSphere || g.cut == kSphere) {
+      const Exit& sphere = f.cut == kSphere ? f : g;
+      const Exit& other = f.cut == kSphere ? g : f;
+      const double R = sphere.h;
+      if (other.cut >= 0) {
+        const Radial_cut& j = candidates_.cuts[other.cut];
+        A = j.numerator - 2 * R * j.weight_step;
+        for (int a = 0; a < 3; ++a) V[a] = -2 * R * j.offset[a];
+      } else {
+        A = other.h;
+        V = {0, 0, 0};
+        V[other.axis] = R;
+      }
+    } else if (f.cut >= 0 && g.cut >= 0) {
       const Radial_cut &j = candidates_.cuts[f.cut], &k = candidates_.cuts[g.cut];
       A = j.numerator * k.weight_step - k.numerator * j.weight_step;
       for (int a = 0; a < 3; ++a) V[a] = j.numerator * k.offset[a] - k.numerator * j.offset[a];
@@ -326,7 +361,7 @@ class Cell_integrator {
   // ---- integrands ----
 
   // Adds the integrands at a of line l, times weight, into v; the exit is `exit`, or the least when -1.
-  // Returns the cut that is the exit (-1 for a plane) and sets derivative to weight tau^2 d tau / d alpha.
+  // Returns the cut that is the exit (kPlane, kSphere otherwise) and sets derivative to weight tau^2 d tau / d alpha.
   int add_node(const Face_line& l, double a, int exit, double weight, Values& v, double& derivative) {
     const Vector3 p = l.at(a);
     const double p_norm = std::sqrt(l.s2 + a * a);
@@ -340,22 +375,27 @@ class Cell_integrator {
     largest_exit_[l.face] = std::max(largest_exit_[l.face], distance);
     if (distance * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
     const double t2 = t * t, t3 = t2 * t;
-    v[0] += weight * t3 / 3;
-    v[1] += weight * t3 * t * p_norm / 4;
+    v[kVolume] += weight * t3 / 3;
+    v[kDistance] += weight * t3 * t * p_norm / 4;
     const double g = weight * t3 / (3 * p_norm);
-    v[2] += g * p[0], v[3] += g * p[1], v[4] += g * p[2];
+    v[kDirection] += g * p[0], v[kDirection + 1] += g * p[1], v[kDirection + 2] += g * p[2];
     const double radial = weight * t2 / (2 * p_norm), inverse_norm2 = 1 / (p_norm * p_norm);
-    v[5] += radial * (1 - p[0] * p[0] * inverse_norm2);
-    v[6] += radial * (1 - p[1] * p[1] * inverse_norm2);
-    v[7] += radial * (1 - p[2] * p[2] * inverse_norm2);
-    v[8] -= radial * p[0] * p[1] * inverse_norm2;
-    v[9] -= radial * p[0] * p[2] * inverse_norm2;
-    v[10] -= radial * p[1] * p[2] * inverse_norm2;
+    v[kHessian] += radial * (1 - p[0] * p[0] * inverse_norm2);
+    v[kHessian + 1] += radial * (1 - p[1] * p[1] * inverse_norm2);
+    v[kHessian + 2] += radial * (1 - p[2] * p[2] * inverse_norm2);
+    v[kHessian + 3] -= radial * p[0] * p[1] * inverse_norm2;
+    v[kHessian + 4] -= radial * p[0] * p[2] * inverse_norm2;
+    v[kHessian + 5] -= radial * p[1] * p[2] * inverse_norm2;
     const int cut = exits_[exit].cut;
     derivative = 0;
     if (cut >= 0) {
       const Radial_cut& c = candidates_.cuts[cut];
-      derivative = weight * t2 * c.tau_derivative(p, p_norm, c.denominator(p, p_norm));
+      const double denominator = c.denominator(p, p_norm);
+      derivative = weight * t2 * c.tau_derivative(p, p_norm, denominator);
+      if (clipped_)  // the face's area element (cell_cubature.h)
+        v[kFaceArea] += weight * t2 / p_norm * std::sqrt(2 * (distance + c.weight_step) * p_norm / denominator);
+    } else if (cut == kSphere) {
+      v[kSphereArea] += weight * exits_[exit].h * exits_[exit].h * inverse_norm2 / p_norm;
     }
     return cut;
   }
@@ -365,14 +405,15 @@ class Cell_integrator {
   void integrate_piece(const Face_line& l, double a0, double a1, int exit, int depth, Line_result& out) {
     const double half = 0.5 * (a1 - a0), middle = 0.5 * (a0 + a1);
     Values kronrod{}, gauss{};
-    std::array<std::pair<int, double>, 31> derivatives;
+    std::array<Cut_integral, 31> cuts;
     std::array<Errors, 31> controlled;
-    std::size_t derivative_count = 0;
+    std::size_t cut_count = 0;
     for (std::size_t k = 0; k < inner_.node.size(); ++k) {
       Values v{};
       double derivative;
       const int cut = add_node(l, middle + half * inner_.node[k], exit, 1, v, derivative);
-      if (cut >= 0) derivatives[derivative_count++] = {cut, half * inner_.kronrod[k] * derivative};
+      if (cut >= 0)
+        cuts[cut_count++] = {cut, half * inner_.kronrod[k] * derivative, half * inner_.kronrod[k] * v[kFaceArea], 0};
       for (int c = 0; c < kComponents; ++c) kronrod[c] += inner_.kronrod[k] * v[c], gauss[c] += inner_.gauss[k] * v[c];
       for (int c = 0; c < kControlled; ++c) controlled[k][c] = v[c];
     }
@@ -389,11 +430,20 @@ class Cell_integrator {
     }
     for (int c = 0; c < kComponents; ++c) out.value[c] += half * kronrod[c];
     for (int c = 0; c < kControlled; ++c) out.error[c] += error[c];
-    for (std::size_t d = 0; d < derivative_count; ++d) {
-      if (!out.derivatives.empty() && out.derivatives.back().first == derivatives[d].first)
-        out.derivatives.back().second += derivatives[d].second;
-      else
-        out.derivatives.push_back(derivatives[d]);
+    // Runs of one cut are merged, across pieces too; the piece's area error goes, whole, to each cut that
+    // is an exit on it (one, but where the walk gave up).
+    int errored = -1;  // the last cut given this piece's error
+    for (std::size_t d = 0; d < cut_count; ++d) {
+      if (!out.cuts.empty() && out.cuts.back().cut == cuts[d].cut) {
+        out.cuts.back().derivative += cuts[d].derivative;
+        out.cuts.back().area += cuts[d].area;
+      } else {
+        out.cuts.push_back(cuts[d]);
+      }
+      if (errored != cuts[d].cut) {
+        out.cuts.back().area_error += error[kFaceArea];
+        errored = cuts[d].cut;
+      }
     }
   }
 
@@ -414,7 +464,7 @@ class Cell_integrator {
         least_exit(l, p, p_norm, &least);
         if (least < tau(exits_[exit], p, p_norm) * (1 - 1e-12)) exit = -1;
       }
-      if (exit >= 0 && exits_[exit].cut < 0 && exits_[exit].axis != l.inner_axis)
+      if (exit >= 0 && exits_[exit].cut == kPlane && exits_[exit].axis != l.inner_axis)
         integrate_flat_piece(l, piece.a0, piece.a1, exits_[exit], result);
       else
         integrate_piece(l, piece.a0, piece.a1, exit, 0, result);
@@ -436,34 +486,40 @@ class Cell_integrator {
     rays_ += 2;
     const double dA = std::asinh(a1 / s) - std::asinh(a0 / s), dP = P1 - P0;
     const double T2 = T * T, T3 = T2 * T;
-    out.value[0] += T3 / 3 * (a1 - a0);
-    out.value[1] += T3 * T / 8 * (a1 * P1 - a0 * P0 + l.s2 * dA);
+    out.value[kVolume] += T3 / 3 * (a1 - a0);
+    out.value[kDistance] += T3 * T / 8 * (a1 * P1 - a0 * P0 + l.s2 * dA);
     Vector3 g;
     for (int c = 0; c < 3; ++c) g[c] = l.q[c] * dA;
     g[l.inner_axis] += dP;
-    for (int c = 0; c < 3; ++c) out.value[2 + c] += T3 / 3 * g[c];
+    for (int c = 0; c < 3; ++c) out.value[kDirection + c] += T3 / 3 * g[c];
     const double qq = a1 / (l.s2 * P1) - a0 / (l.s2 * P0), qe = 1 / P1 - 1 / P0, ee = dA - (a1 / P1 - a0 / P0);
     Vector3 e{0, 0, 0};
     e[l.inner_axis] = 1;
     const auto entry = [&](int i, int j) {
       return 0.5 * T2 * ((i == j ? dA : 0.0) - l.q[i] * l.q[j] * qq + (l.q[i] * e[j] + e[i] * l.q[j]) * qe - e[i] * e[j] * ee);
     };
-    out.value[5] += entry(0, 0), out.value[6] += entry(1, 1), out.value[7] += entry(2, 2);
-    out.value[8] += entry(0, 1), out.value[9] += entry(0, 2), out.value[10] += entry(1, 2);
+    out.value[kHessian] += entry(0, 0), out.value[kHessian + 1] += entry(1, 1), out.value[kHessian + 2] += entry(2, 2);
+    out.value[kHessian + 3] += entry(0, 1), out.value[kHessian + 4] += entry(0, 2), out.value[kHessian + 5] += entry(1, 2);
   }
 
   // ---- the outer integral over b ----
 
-  void accept(const Values& value, const Errors& error, const std::vector<std::pair<int, double>>& derivatives) {
+  void accept(const Values& value, const Errors& error, const std::vector<Cut_integral>& cuts) {
     for (int c = 0; c < kComponents; ++c) total_[c] += value[c];
     for (int c = 0; c < kControlled; ++c) total_error_[c] += error[c];
-    for (const auto& [cut, d] : derivatives) derivative_total_[cut] += d;
+    for (const Cut_integral& i : cuts) {
+      derivative_total_[i.cut] += i.derivative;
+      area_total_[i.cut] += i.area;
+      area_error_total_[i.cut] += i.area_error;
+    }
   }
 
   // Whether the errors of a panel (or inner piece) of the given width stay within share x its budget.
   bool within_budget(const Errors& e, double width, double share = 1) const {
     const double volume = share * volume_budget_ * width;
-    return e[0] <= volume && e[1] <= share * distance_budget_ * width && e[2] + e[3] + e[4] <= volume;
+    return e[kVolume] <= volume && e[kDistance] <= share * distance_budget_ * width &&
+           e[kDirection] + e[kDirection + 1] + e[kDirection + 2] <= volume &&
+           (!clipped_ || e[kFaceArea] + e[kSphereArea] <= share * area_budget_ * width);
   }
 
   // Gauss-Kronrod 15/31 over [l, r] in s, b = l + (r - l)(3 s^2 - 2 s^3): the substitution's derivative
@@ -473,7 +529,7 @@ class Cell_integrator {
     Values kronrod{}, gauss{};
     Errors inner{};
     std::array<Errors, 31> controlled{};
-    std::vector<std::pair<int, double>> derivatives;
+    std::vector<Cut_integral> cuts;
     for (std::size_t k = 0; k < outer_.node.size(); ++k) {
       const double s = 0.5 * (1 + outer_.node[k]);
       const double b = l + (r - l) * s * s * (3 - 2 * s), jacobian = 0.5 * (r - l) * 6 * s * (1 - s);
@@ -485,8 +541,24 @@ class Cell_integrator {
       }
       for (int c = 0; c < kControlled; ++c) controlled[k][c] = jacobian * line_result.value[c];
       for (int c = 0; c < kControlled; ++c) inner[c] += outer_.kronrod[k] * jacobian * line_result.error[c];
-      for (const auto& [cut, d] : line_result.derivatives)
-        derivatives.push_back({cut, outer_.kronrod[k] * jacobian * d});
+      for (const Cut_integral& i : line_result.cuts) {
+        const double w = outer_.kronrod[k] * jacobian;
+        cuts.push_back({i.cut, w * i.derivative, w * i.area, w * i.area_error});
+        if (clipped_) {
+          panel_kronrod_[i.cut] += w * i.area;
+          panel_gauss_[i.cut] += outer_.gauss[k] * jacobian * i.area;
+        }
+      }
+    }
+    // Each face's outer error, |Kronrod - Gauss| of its own area (without QUADPACK's scaling).
+    if (clipped_) {
+      const std::size_t lines = cuts.size();
+      for (std::size_t n = 0; n < lines; ++n) {
+        const int cut = cuts[n].cut;
+        if (panel_kronrod_[cut] == 0 && panel_gauss_[cut] == 0) continue;
+        cuts.push_back({cut, 0, 0, std::fabs(panel_kronrod_[cut] - panel_gauss_[cut])});
+        panel_kronrod_[cut] = panel_gauss_[cut] = 0;
+      }
     }
     Errors error;
     for (int c = 0; c < kControlled; ++c) {
@@ -497,7 +569,7 @@ class Cell_integrator {
     }
     if (!force && !within_budget(error, r - l)) return false;
     if (!within_budget(error, r - l)) reached_ = false;
-    accept(kronrod, error, derivatives);
+    accept(kronrod, error, cuts);
     return true;
   }
 
@@ -511,10 +583,23 @@ class Cell_integrator {
     for (int c = 0; c < kComponents; ++c) value[c] = half * (left.value[c] + right.value[c]);
     for (int c = 0; c < kControlled; ++c)
       error[c] = half * (std::fabs(left.value[c] - right.value[c]) + left.error[c] + right.error[c]);
-    std::vector<std::pair<int, double>> derivatives;
-    for (const auto& [cut, d] : left.derivatives) derivatives.push_back({cut, half * d});
-    for (const auto& [cut, d] : right.derivatives) derivatives.push_back({cut, half * d});
-    accept(value, error, derivatives);
+    // Each face's error: its own variation across the bracket, and its lines' errors.
+    std::vector<Cut_integral> cuts;
+    for (const Line_result* side : {&left, &right})
+      for (const Cut_integral& i : side->cuts) {
+        cuts.push_back({i.cut, half * i.derivative, half * i.area, half * i.area_error});
+        if (clipped_) panel_kronrod_[i.cut] += (side == &left ? half : -half) * i.area;
+      }
+    if (clipped_) {
+      const std::size_t lines = cuts.size();
+      for (std::size_t n = 0; n < lines; ++n) {
+        const int cut = cuts[n].cut;
+        if (panel_kronrod_[cut] == 0) continue;
+        cuts.push_back({cut, 0, 0, std::fabs(panel_kronrod_[cut])});
+        panel_kronrod_[cut] = 0;
+      }
+    }
+    accept(value, error, cuts);
   }
 
   // [l, r] with the signatures at its ends. Where they differ, bisection on the signatures alone keeps
@@ -566,17 +651,19 @@ class Cell_integrator {
   // Rough volume and distance integral (a midpoint rule over a few lines per face), which set the error
   // budgets: tolerance x each, spread evenly over the 6 faces' outer coordinate b in [-1, 1].
   void estimate_scales() {
-    volume_budget_ = distance_budget_ = kInfinity;
-    double volume = 0, distance = 0;
+    volume_budget_ = distance_budget_ = area_budget_ = kInfinity;
+    double volume = 0, distance = 0, area = 0;
     constexpr int kLines = 4;
     for (int face = 0; face < 6; ++face)
       for (int k = 0; k < kLines; ++k) {
         const Line_result r = integrate_line(face, -1 + (2.0 * k + 1) / kLines, face_live_[face]);
-        volume += r.value[0] * 2.0 / kLines, distance += r.value[1] * 2.0 / kLines;
+        volume += r.value[kVolume] * 2.0 / kLines, distance += r.value[kDistance] * 2.0 / kLines;
+        area += (r.value[kFaceArea] + r.value[kSphereArea]) * 2.0 / kLines;
       }
     const double tolerance = options_.relative_tolerance, tiny = std::numeric_limits<double>::min();
     volume_budget_ = std::max(tolerance * volume / 12, tiny);
     distance_budget_ = std::max(tolerance * distance / 12, tiny);
+    if (clipped_) area_budget_ = std::max(tolerance * area / 12, tiny);
   }
 
   const Vector3 centre_;
@@ -588,10 +675,12 @@ class Cell_integrator {
   std::vector<Piece> pieces_;
   mutable std::vector<std::pair<double, double>> ranges_;
   std::array<std::vector<int>, 6> face_live_;  // the exits that can be the least somewhere on each face
+  const bool clipped_;  // a clip radius: the sphere is an exit, and the areas are integrated
   Values total_{};
   Errors total_error_{};
-  std::vector<double> derivative_total_;
-  double volume_budget_ = 0, distance_budget_ = 0;
+  std::vector<double> derivative_total_, area_total_, area_error_total_;  // per cut
+  std::vector<double> panel_kronrod_, panel_gauss_;  // per cut, zero between uses (panel(), bracket())
+  double volume_budget_ = 0, distance_budget_ = 0, area_budget_ = kInfinity;
   std::array<double, 6> largest_exit_{0, 0, 0, 0, 0, 0};
   std::size_t rays_ = 0, panels_ = 0;
   bool reached_ = true;

@@ -21,12 +21,22 @@
 // events, which the substitution b = l + (r - l)(3 s^2 - 2 s^3) smooths, and Gauss-Kronrod 15/31 in s
 // integrates, halving a panel whose estimate misses its budget.
 //
+// Boundary areas (with a clip radius R). A face with site j is the radial graph t(u) of the cut, so its
+// area element is t^2 dOmega / cos(theta), theta between the ray u and the face's normal u - u_j (u_j the
+// unit vector from x_j): on the face |x - x_j| = t + alpha, so cos(theta) = sqrt((alpha - u.D) / (2 (t +
+// alpha))), and with dOmega = da db / |p|^3 the element is tau^2 / |p| sqrt(2 (t + alpha) |p| / (alpha |p|
+// - p.D)) da db; alpha - u.D = c / (2 t) >= c / (2 R) > 0 below the clip, so it stays bounded. The sphere's
+// element is R^2 / |p|^3 da db. The sphere ties a cut where |p| (c - 2 R alpha) = -2 R p.D, and the plane
+// p[m] tau = h where |p| h = p.(R e_m): the same form |p| A = p.V as the other ties.
+//
 // Error estimate. Per panel |Kronrod - Gauss| plus the inner estimates, per bracket its variation; summed,
 // they must stay within tolerance x volume (volume, direction integral, whose norm is at most the volume)
 // and tolerance x distance integral. This is an ESTIMATE of quadrature error in floating point, not a
 // bound (an event both samples and rules miss goes unseen); the tests measure it against independent
 // volumes (tests/measure). Rounding errors (about 1e-16 relative per ray) are far below any tolerance.
 #pragma once
+
+#include <limits>
 
 #include "measure/cell_measures.h"
 #include "measure/cut_candidates.h"
@@ -35,6 +45,10 @@ namespace apollonius {
 
 struct Cell_cubature_options {
   double relative_tolerance = 1e-8;
+  // Finite: the cell is clipped by the ball of this radius about the site (contacts: d_i <= probe), and
+  // the boundary areas are integrated and their errors controlled too (Cell_measure::contact_areas,
+  // sphere_area). The box must then contain that ball.
+  double clip_radius = std::numeric_limits<double>::infinity();
 };
 
 struct Cell_cubature_result {

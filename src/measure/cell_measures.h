@@ -29,6 +29,14 @@ struct Cell_measure {
   std::vector<std::pair<Site_index, double>> volume_derivatives;  // d m_i / d w_j <= 0 for each j sharing a
                                                                   //   face with C_i (no error estimate);
                                                                   //   d m_i / d w_i is minus their sum
+  // With a clip radius (cell_cubature.h) only: the area of the face with each site j (ascending, nonzero),
+  // and of the clipping sphere inside the cell, each with its error estimate.
+  struct Face_area {
+    Site_index site;
+    double area, error;
+  };
+  std::vector<Face_area> contact_areas;
+  double sphere_area = 0, sphere_area_error = 0;
   std::size_t directions = 0;      // rays evaluated
   std::size_t cut_candidates = 0;  // sites whose cuts were evaluated on each ray
   bool reached_tolerance = true;   // false: a refinement limit was hit first (the errors say by how much)
