@@ -1,5 +1,6 @@
 #include "cli/contacts_command.h"
 
+#include <chrono>
 #include <memory>
 
 #include "io/round_trip.h"
@@ -18,11 +19,12 @@ struct Contacts_command {
   std::string format = "text";
   std::string volumes_output;
   double probe = 1.4;
-  double tolerance = 1e-6;
+  double tolerance = 1e-4;
+  bool stats = false;
   Diagram_options diagram;
 };
 
-int run(const Contacts_command& command, std::ostream& out, std::ostream&) {
+int run(const Contacts_command& command, std::ostream& out, std::ostream& err) {
   if (!(command.probe >= 0)) throw Usage_error("--probe must be a number >= 0, not " + round_trip(command.probe));
   if (!(command.tolerance >= kLeastTolerance && command.tolerance <= kGreatestTolerance))
     throw Usage_error("--tolerance must lie in [1e-10, 0.5], not " + round_trip(command.tolerance));
@@ -31,7 +33,9 @@ int run(const Contacts_command& command, std::ostream& out, std::ostream&) {
   options.probe = command.probe;
   options.relative_tolerance = command.tolerance;
   options.threads = command.diagram.threads;
+  const auto start = std::chrono::steady_clock::now();
   const Contact_measures measures = measure_contacts(input.sites, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_command_output(command.output, out, [&](std::ostream& o) {
     if (command.format == "json")
       write_contacts_json(o, measures, options);
@@ -40,6 +44,9 @@ int run(const Contacts_command& command, std::ostream& out, std::ostream&) {
   });
   if (!command.volumes_output.empty())
     write_command_output(command.volumes_output, out, [&](std::ostream& o) { write_contact_volumes_text(o, measures); });
+  if (command.stats)
+    err << "contacts count\nballs " << input.sites.size() << "\nhidden " << measures.hidden.size() << "\ncontacts "
+        << measures.contacts.size() << "\nrays " << measures.directions << "\ncontacts seconds\nmeasure " << seconds << '\n';
   return EXIT_OK;
 }
 
@@ -69,6 +76,7 @@ Command_run add_contacts_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--volumes-output", command->volumes_output, "writes 'i volume' per ball, atomically")
       ->type_name("F");
+  sub->add_flag("--stats", command->stats, "counts (rays evaluated) and time on standard error");
   add_diagram_options(*sub, command->diagram);
   return [command](std::ostream& out, std::ostream& err) { return run(*command, out, err); };
 }

@@ -16,7 +16,7 @@ namespace apollonius {
 
 struct Contact_options {
   double probe = 1.4;                 // P >= 0, Voronota's default
-  double relative_tolerance = 1e-6;   // per cell: estimated errors <= this x its clipped volume and area
+  double relative_tolerance = 1e-4;   // per cell: estimated errors <= this x its clipped volume and area
   int threads = 1;
   const Cancellation* cancellation = nullptr;  // checked once per cell
 };
