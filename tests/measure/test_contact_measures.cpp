@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 
+#include "measure/cell_cubature.h"
 #include "measure/contact_measures.h"
 
 using namespace apollonius;
@@ -70,6 +71,23 @@ TEST_CASE("a lone ball: its whole sphere is accessible and its volume is the bal
       check_estimate(m.sas[0], m.sas_error[0], 4 * kPi * R * R);
       check_estimate(m.volume[0], m.volume_error[0], 4 * kPi * R * R * R / 3);
     }
+}
+
+TEST_CASE("a clipped lone cell: the sphere's closed forms give every integral of the ball") {
+  // Over the ball of radius R about the site: int |x| = pi R^4, int x / |x| = 0, int (I - u u^T) / |x| =
+  // (4 pi / 3) R^2 I, volume and sphere area.
+  const double R = 2.5;
+  Cut_candidates none;
+  none.clearance.fill(INFINITY);
+  Cell_cubature_options options;
+  options.clip_radius = R;
+  const Cell_measure m = integrate_cell({0.5, 0, 0, 1}, none, {{-5.5, -6, -6}, {6.5, 6, 6}}, options).measure;
+  CHECK(std::fabs(m.volume - 4 * kPi * R * R * R / 3) < 1e-12 * R * R * R);
+  CHECK(std::fabs(m.distance_integral - kPi * R * R * R * R) < 1e-12 * R * R * R * R);
+  CHECK(std::fabs(m.sphere_area - 4 * kPi * R * R) < 1e-12 * R * R);
+  for (double c : m.direction_integral) CHECK(std::fabs(c) < 1e-12 * R * R * R);
+  for (int k = 0; k < 3; ++k) CHECK(std::fabs(m.median_hessian[k] - 4 * kPi / 3 * R * R) < 1e-12 * R * R);
+  for (int k = 3; k < 6; ++k) CHECK(std::fabs(m.median_hessian[k]) < 1e-12 * R * R);
 }
 
 TEST_CASE("two balls: the face against a surface-of-revolution integral, the union's volume and area") {
