@@ -14,20 +14,26 @@
 namespace apollonius {
 namespace {
 
-// Patches are refined at most this often (6 * 4^10 patches at the most, only where sites nearly tie at
+// Patches are refined at most this often (6 * 8^10 patches at the most, only where sites nearly tie at
 // infinity). A patch whose kept sites stop changing for kStagnationLevels levels, with at most
 // kStagnantSites of them, stops earlier: sites that tie at infinity (or beyond what the root box lets the
 // bound see) are not separated by finer patches, and their quadruples are decided anyway.
 constexpr int kMaxPatchDepth = 10;
+constexpr int kDistanceDepth = 3;
 constexpr int kStagnationLevels = 2;
 constexpr std::size_t kStagnantSites = 8;
 // Witnesses tried per patch (refine()).
 constexpr int kWitnesses = 3;
 
+// A patch is a box of the far region in the coordinates (y, tau): x = O + y / tau (far_field.h). Halving
+// tau as well as the directions makes patches at finite distance bounded, so sites that own points only
+// near R (a lattice face's lighter balls, whose cells end a few spacings above the face) are separated
+// from those owning the points far away, as in the octree; the patch [0, tau1) reaches infinity.
 struct Patch {
   int axis;     // the face of [-1, 1]^3: direction y with y[axis] = side
   double side;  // +1 or -1
   double s0, s1, t0, t1;  // the other two coordinates of y, in axis order
+  double tau0, tau1;      // absolute, dyadic fractions of the root's bound (below): every point is in a leaf
   int depth;
   int stagnant;  // levels since the kept sites last changed
 };
@@ -57,23 +63,38 @@ class Far_field {
   Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius)
       : sites_(sites), origin_(origin), radius_(radius) {}
 
+  // The root patches: a face of the direction cube, tau in [0, sqrt(3) / R] (|y| <= sqrt(3)).
+  Patch root(int face) const {
+    return {face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, std::nextafter(std::sqrt(3.0) / radius_, INFINITY), 0, 0};
+  }
+
+  // Termination: each call either stops or recurses into 8 children one level deeper, and stops at
+  // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests and O(k log k) for the lift span.
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
     std::vector<Site_index> kept = candidates;
     {
       const Far_field_rounding<Kernel> rounding;
+      const std::optional<Direction_box> directions = direction_box(p);
+      if (!directions) return;  // no point of the patch lies outside R
       // A witness far from the others (a lone ball beside a small cluster) may tie with all of them, so
       // the next witness is the best of the sites it kept, up to kWitnesses of them.
-      const Direction_box directions = direction_box(p);
       std::vector<Site_index> tried;
       for (int round = 0; round < kWitnesses && kept.size() > 3; ++round) {
         const std::optional<Site_index> w = witness(p, kept, tried);
         if (!w) break;
         tried.push_back(*w);
-        remove_beaten(directions, sites_[*w], kept);
+        remove_beaten(*directions, sites_[*w], kept);
       }
     }
     if (kept.size() <= 3) {
       if (kept.size() >= 2) patch_sites_.push_back(kept);
+      return;
+    }
+    // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle) have
+    // no vertex among themselves (lift_outside_span.h), wherever they are: nothing to refine.
+    std::array<Site_index, 4> basis;
+    if (heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis) <= 2) {
+      patch_sites_.push_back(kept);
       return;
     }
     const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
@@ -83,10 +104,11 @@ class Far_field {
       record_quadruples(kept);
       return;
     }
-    const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2;
-    for (int q = 0; q < 4; ++q)
-      refine({p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0, q & 2 ? p.t1 : tm, p.depth + 1,
-              stagnant},
+    const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
+    const int children = p.depth < kDistanceDepth ? 8 : 4;
+    for (int q = 0; q < children; ++q)
+      refine({p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0, q & 2 ? p.t1 : tm,
+              q & 4 ? taum : p.tau0, q & 4 ? p.tau1 : taum, p.depth + 1, stagnant},
              kept);
   }
 
@@ -94,19 +116,22 @@ class Far_field {
   std::vector<std::vector<Site_index>> take_patch_sites() { return std::move(patch_sites_); }
 
  private:
-  // The patch's directions y = (side, s, t) in face coordinates, and tau in [0, |y| / R] (far_field.h).
+  // The patch's directions y = (side, s, t) in face coordinates, and its tau within [0, |y| / R]
+  // (far_field.h); none when the patch's tau all exceed |y| / R (its points are inside R).
   struct Direction_box {
     std::array<Interval, 3> y;
     Interval tau;
   };
 
-  Direction_box direction_box(const Patch& p) const {
+  std::optional<Direction_box> direction_box(const Patch& p) const {
     Direction_box box;
     box.y[p.axis] = Interval(p.side);
     box.y[(p.axis + 1) % 3] = Interval(p.s0, p.s1);
     box.y[(p.axis + 2) % 3] = Interval(p.t0, p.t1);
     const Interval y_norm = interval_sqrt<Kernel>(CGAL::square(box.y[0]) + CGAL::square(box.y[1]) + CGAL::square(box.y[2]));
-    box.tau = Interval(0, (y_norm / Interval(radius_)).sup());
+    const double outside = (y_norm / Interval(radius_)).sup();
+    if (p.tau0 > outside) return std::nullopt;
+    box.tau = Interval(p.tau0, std::min(p.tau1, outside));
     return box;
   }
 
@@ -130,9 +155,10 @@ class Far_field {
     kept.resize(end);
   }
 
-  // The site of `kept` not yet tried that looks nearest far away in the patch's middle direction y: the
-  // largest y.p + w |y|. Only a choice (plain doubles), compared by differences p_k - p_best so that a
-  // small cluster far from O is still ordered; every removal is certified in remove_beaten().
+  // The site of `kept` not yet tried that looks nearest at the patch's middle: at the point O + y / tau
+  // for a patch at finite distance, else far away in the middle direction y (the largest y.p + w |y|).
+  // Only a choice (plain doubles), the latter compared by differences p_k - p_best so that a small cluster
+  // far from O is still ordered; every removal is certified in remove_beaten().
   std::optional<Site_index> witness(const Patch& p, const std::vector<Site_index>& kept,
                                     const std::vector<Site_index>& tried) const {
     std::array<double, 3> y;
@@ -140,16 +166,27 @@ class Far_field {
     y[(p.axis + 1) % 3] = p.s0 + (p.s1 - p.s0) / 2;
     y[(p.axis + 2) % 3] = p.t0 + (p.t1 - p.t0) / 2;
     const double y_norm = std::sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
+    const double tau = p.tau0 + (p.tau1 - p.tau0) / 2;
+    const std::array<double, 3> x = {origin_[0] + y[0] / tau, origin_[1] + y[1] / tau, origin_[2] + y[2] / tau};
+    const auto distance = [&](const Site& s) {
+      return std::sqrt((x[0] - s.x) * (x[0] - s.x) + (x[1] - s.y) * (x[1] - s.y) + (x[2] - s.z) * (x[2] - s.z)) - s.w;
+    };
     std::optional<Site_index> best;
+    double best_distance = 0;
     for (Site_index k : kept) {
       if (std::find(tried.begin(), tried.end(), k) != tried.end()) continue;
       if (!best) {
-        best = k;
+        best = k, best_distance = distance(sites_[k]);
         continue;
       }
       const Site& a = sites_[k];
       const Site& b = sites_[*best];
-      if (y[0] * (a.x - b.x) + y[1] * (a.y - b.y) + y[2] * (a.z - b.z) + (a.w - b.w) * y_norm > 0) best = k;
+      if (p.tau0 > 0) {
+        const double d = distance(a);
+        if (d < best_distance) best = k, best_distance = d;
+      } else if (y[0] * (a.x - b.x) + y[1] * (a.y - b.y) + y[2] * (a.z - b.z) + (a.w - b.w) * y_norm > 0) {
+        best = k;
+      }
     }
     return best;
   }
@@ -165,7 +202,7 @@ class Far_field {
     // per kept set.
     std::array<Site_index, 4> basis;
     const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
-    if (dimension <= 2) return;
+    if (dimension <= 2) return;  // refine() stops there before
     if (dimension == 3 && kept.size() > 4) {
       if (kept != last_kept_) {
         last_kept_ = kept;
@@ -210,7 +247,7 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
   tbb::parallel_for(0, 6, [&](int face) {
     Far_field<Kernel> field(sites, origin, radius);
-    field.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, escaping);
+    field.refine(field.root(face), escaping);
     by_face[face] = field.take_quadruples();
     sites_by_face[face] = field.take_patch_sites();
   });

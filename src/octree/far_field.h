@@ -6,10 +6,13 @@
 //     d_i(x) - d_w(x) >= w_w - w_i + e.(p_w - p_i),
 // so site i owns no point outside R in a cone of directions y where (w_w - w_i) |v| + v.(p_w - p_i) > 0
 // for every v. Only differences p_w - p_i enter, so a small cluster far from O is separated as well as
-// one at O. The directions are cut into patches (squares on the faces of the cube), and refinement stops
-// at 3 remaining sites (no vertex can lie in the patch's cone outside R) or at a maximum depth, where
-// every vertex outside R in that cone has its tie set among the remaining sites: their quadruples are
-// enumerated and decided exactly against the escaping sites. All bounds use outward-rounded intervals.
+// one at O. The far region is cut into patches: squares of directions on the faces of the cube times
+// intervals of tau, halved in all three for the first levels (so that sites owning points only at finite
+// distance, like a lattice face's lighter balls, leave the patches beyond them), then in the directions
+// only. Refinement stops at 3 remaining sites or sites whose lifts span at most a plane (no vertex can lie
+// among them), or at a maximum depth, where every vertex outside R in the patch has its tie set among the
+// remaining sites: their quadruples are enumerated and decided exactly against the escaping sites. All
+// bounds use outward-rounded intervals.
 #pragma once
 
 #include <array>
