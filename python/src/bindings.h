@@ -11,5 +11,6 @@ void bind_read_sites(pybind11::module_& module);  // read_sites_binding.cpp
 void bind_vertices(pybind11::module_& module);    // vertices_binding.cpp
 void bind_diagram(pybind11::module_& module);     // diagram_binding.cpp
 void bind_certify(pybind11::module_& module);     // certify_binding.cpp
+void bind_centroidal(pybind11::module_& module);  // centroidal_binding.cpp
 
 }  // namespace apollonius::python
