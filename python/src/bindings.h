@@ -12,5 +12,6 @@ void bind_vertices(pybind11::module_& module);    // vertices_binding.cpp
 void bind_diagram(pybind11::module_& module);     // diagram_binding.cpp
 void bind_certify(pybind11::module_& module);     // certify_binding.cpp
 void bind_contacts(pybind11::module_& module);    // contacts_binding.cpp
+void bind_centroidal(pybind11::module_& module);  // centroidal_binding.cpp
 
 }  // namespace apollonius::python

@@ -243,8 +243,8 @@ void bind_diagram(py::module_& module) {
           options.cancellation = &cancellation;
           Diagram vertices = octree_diagram(sites, options);
           throw_if_cancelled(&cancellation);
-          Diagram_topology built = build_topology(sites, std::move(vertices), regions, {threads});
-          validate_topology(sites, built);  // as the command line: a violation is an internal error
+          Diagram_topology built = build_topology(sites, std::move(vertices), regions, {threads, &cancellation});
+          validate_topology(sites, built, &cancellation);  // as the command line: a violation is an internal error
           return built;
         });
         return Diagram_result{vertices_to_python(topology.vertices, py::none()), edges_to_python(topology.edges),
@@ -264,8 +264,8 @@ Returns Diagram: .vertices (Vertices), .edges (Edges), .faces (Faces), .cells (C
 arrays in compressed rows, with edges[i], faces[f], cells[c] as dicts for one at a time.
 Raises ValueError for bad input, with the command line's message, and RuntimeError for what this
 version does not decide (some degenerate vertices and edges: the command line exits 3 there too).
-The computation releases the GIL. Ctrl-C (KeyboardInterrupt) stops the vertices' computation within a
-fraction of a second; once the edges and faces are being built, it waits for them to end.)");
+The computation releases the GIL. Ctrl-C (KeyboardInterrupt) stops it within a fraction of a second, in
+every phase: vertices, edges, faces, cells and their validation.)");
 }
 
 }  // namespace apollonius::python

@@ -13,7 +13,8 @@ PYBIND11_MODULE(apollonius3d, module) {
       "vertices(centres, weights)  every vertex of the diagram with its whole tie set\n"
       "diagram(centres, weights)   the whole diagram: vertices, edges, faces, cells\n"
       "certify(centres, weights, claim)  another program's vertex list, judged claim by claim\n"
-      "contacts(centres, weights)  contact areas, SAS and volumes within the probe (approximate)\n\n"
+      "contacts(centres, weights)  contact areas, SAS and volumes within the probe (approximate)\n"
+      "centroidal(centres, weights, domain)  the centroidal Apollonius diagram in a box\n\n"
       "Bad input raises ValueError with the command line's message; internal errors raise RuntimeError.\n"
       "Computations release the GIL, and Ctrl-C stops them within a fraction of a second.";
   module.attr("__version__") = APOLLONIUS3D_VERSION;
@@ -26,4 +27,5 @@ PYBIND11_MODULE(apollonius3d, module) {
   apollonius::python::bind_diagram(module);
   apollonius::python::bind_certify(module);
   apollonius::python::bind_contacts(module);
+  apollonius::python::bind_centroidal(module);
 }

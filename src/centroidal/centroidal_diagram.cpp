@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <sstream>
 
 #include "centroidal/anderson_acceleration.h"
@@ -21,42 +20,6 @@ constexpr int kMaxHalvings = 30, kMaxTrials = 40;
 constexpr int kWeightStepsPerIteration = 3;
 // Site steps mixed by Anderson acceleration.
 constexpr std::size_t kAndersonDepth = 5;
-
-void validate(const std::vector<Site>& sites, const std::vector<double>& fractions, const Axis_box& domain) {
-  for (int a = 0; a < 3; ++a)
-    if (!(std::isfinite(domain.lo[a]) && std::isfinite(domain.hi[a]) && domain.lo[a] < domain.hi[a]))
-      throw Centroidal_parameter_error("the domain must have X0 < X1, Y0 < Y1 and Z0 < Z1", -1);
-  if (sites.empty()) throw Centroidal_parameter_error("no sites", -1);
-  if (fractions.size() != sites.size())
-    throw Centroidal_parameter_error(std::to_string(fractions.size()) + " masses for " + std::to_string(sites.size()) +
-                                         " sites",
-                                     -1);
-  double sum = 0;
-  for (std::size_t i = 0; i < fractions.size(); ++i) {
-    if (!(fractions[i] > 0) || !std::isfinite(fractions[i]))
-      throw Centroidal_parameter_error("a mass must be positive, not " + round_trip(fractions[i]), static_cast<long>(i));
-    sum += fractions[i];
-  }
-  if (!(std::fabs(sum - 1) <= 1e-9))
-    throw Centroidal_parameter_error("the masses sum to " + round_trip(sum) + ", not 1 (within 1e-9)", -1);
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    const double x[3] = {sites[i].x, sites[i].y, sites[i].z};
-    for (int a = 0; a < 3; ++a)
-      if (!(domain.lo[a] <= x[a] && x[a] <= domain.hi[a]))
-        throw Centroidal_parameter_error("the site (" + round_trip(x[0]) + ", " + round_trip(x[1]) + ", " +
-                                             round_trip(x[2]) + ") lies outside the domain",
-                                         static_cast<long>(i));
-  }
-  // Two sites at one centre: one hides the other whatever the weights, so that cell can never have a volume.
-  std::map<std::array<double, 3>, std::size_t> centres;
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    const auto [it, inserted] = centres.insert({{sites[i].x, sites[i].y, sites[i].z}, i});
-    if (!inserted)
-      throw Centroidal_parameter_error("the site has the centre of site " + std::to_string(it->second) +
-                                           " (0-based): one would hide the other for any weights",
-                                       static_cast<long>(i));
-  }
-}
 
 double max_mass_error(const Energy_evaluation& e, const std::vector<double>& targets) {
   double worst = 0;
@@ -94,7 +57,10 @@ double least_volume_ratio(const Energy_evaluation& e, const std::vector<double>&
 
 Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std::vector<double>& mass_fractions,
                                      const Axis_box& domain, const Centroidal_options& options) {
-  validate(initial, mass_fractions, domain);
+  check_centroidal_domain(domain);
+  check_centroidal_tolerance(options.tolerance);
+  check_centroidal_iterations(options.max_iterations);
+  check_centroidal_sites(initial, mass_fractions, domain);
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const std::size_t n = initial.size();
@@ -115,7 +81,7 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
   const auto evaluate = [&](const std::vector<Site>& at, const std::vector<double>& volumes, const Axis_box& box,
                             double quadrature_tolerance, int threads) {
     ++result.evaluations;
-    return evaluate_energy(at, volumes, box, quadrature_tolerance, threads);
+    return evaluate_energy(at, volumes, box, quadrature_tolerance, threads, options.cancellation);
   };
   std::vector<Site> sites = initial;
   Anderson_acceleration acceleration(kAndersonDepth);
@@ -131,6 +97,7 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
   next_quadrature(std::max(max_mass_error(state, targets), max_median_error(state)));
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    throw_if_cancelled(options.cancellation);
     Centroidal_iteration row{};
     row.iteration = iteration;
     row.energy_before = state.energy;

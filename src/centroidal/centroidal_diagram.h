@@ -17,22 +17,15 @@
 #pragma once
 
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "centroidal/centroidal_parameters.h"
+#include "diagram/cancellation.h"
 #include "predicates/axis_box.h"
 #include "predicates/site.h"
 
 namespace apollonius {
-
-// Bad parameters (a mass that is not positive, masses not summing to 1, the wrong number of masses, a site
-// outside the domain, two sites at one centre, a degenerate domain). site is the 0-based site or mass the
-// message is about, or -1.
-struct Centroidal_parameter_error : std::invalid_argument {
-  Centroidal_parameter_error(const std::string& message, long site) : std::invalid_argument(message), site(site) {}
-  long site;
-};
 
 // One row of the history, at the end of an iteration.
 struct Centroidal_iteration {
@@ -54,6 +47,9 @@ struct Centroidal_options {
   bool move_sites = true;  // false: only the weights (a capacity-constrained diagram of fixed sites)
   std::function<void(const Centroidal_iteration&)> on_iteration;  // called after each iteration
   std::function<void(const std::string&)> on_report;              // each degenerate situation, as it happens
+  // When given, another thread may request it: the loop then throws Cancelled soon after (it checks once
+  // per iteration, and its diagrams and cell measures check it: cancellation.h) and returns nothing.
+  const Cancellation* cancellation = nullptr;
 };
 
 struct Centroidal_result {
@@ -66,7 +62,8 @@ struct Centroidal_result {
 };
 
 // Target volumes as fractions of the domain's volume (positive, summing to 1 within 1e-9). Throws
-// Centroidal_parameter_error on bad parameters.
+// Centroidal_parameter_error on bad parameters (centroidal_parameters.h: the domain, the tolerance, the
+// iterations, the sites and masses).
 Centroidal_result centroidal_diagram(const std::vector<Site>& sites, const std::vector<double>& mass_fractions,
                                      const Axis_box& domain, const Centroidal_options& options = {});
 

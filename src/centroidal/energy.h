@@ -11,6 +11,7 @@
 
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "diagram/diagram.h"
 #include "measure/cell_measures.h"
 
@@ -26,8 +27,9 @@ struct Energy_evaluation {
 
 // The certified diagram of `sites` (the brute-force reference below 9 sites, where it is the faster, else
 // the octree), its measures in `domain` to the relative quadrature tolerance, and E4 for the target volumes
-// (absolute, not fractions).
+// (absolute, not fractions). Checks cancellation (cancellation.h) in the octree and per cell measured.
 Energy_evaluation evaluate_energy(const std::vector<Site>& sites, const std::vector<double>& target_volumes,
-                                  const Axis_box& domain, double quadrature_tolerance, int threads);
+                                  const Axis_box& domain, double quadrature_tolerance, int threads,
+                                  const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -14,10 +14,6 @@
 namespace apollonius {
 namespace {
 
-// The loosest and tightest tolerances: below 1e-10 the cubature's rounding (about 1e-14 relative per
-// cell) and its error estimates leave too little room.
-constexpr double kLeastTolerance = 1e-10, kGreatestTolerance = 0.5;
-
 // Runs longer than this print a progress line per iteration on standard error.
 constexpr double kQuietSeconds = 1;
 
@@ -44,11 +40,17 @@ void write_history(std::ostream& out, const std::vector<Centroidal_iteration>& h
 int run(const Centroidal_command& command, std::ostream& out, std::ostream& err) {
   Axis_box domain;
   for (int a = 0; a < 3; ++a) domain.lo[a] = command.domain[a], domain.hi[a] = command.domain[a + 3];
-  for (int a = 0; a < 3; ++a)
-    if (!(domain.lo[a] < domain.hi[a]))
-      throw Usage_error("--domain needs X0 < X1, Y0 < Y1 and Z0 < Z1 (a box with a volume)");
-  if (!(command.tolerance >= kLeastTolerance && command.tolerance <= kGreatestTolerance))
-    throw Usage_error("--tolerance must lie in [1e-10, 0.5], not " + round_trip(command.tolerance));
+  // The options first, as the library checks them (centroidal_parameters.h), before any file is read.
+  try {
+    check_centroidal_domain(domain);
+    check_centroidal_tolerance(command.tolerance);
+    check_centroidal_iterations(command.max_iterations);
+  } catch (const Centroidal_parameter_error& e) {
+    const char* option = e.parameter == Centroidal_parameter::domain      ? "--domain"
+                         : e.parameter == Centroidal_parameter::tolerance ? "--tolerance"
+                                                                          : "--max-iterations";
+    throw Usage_error(std::string(option) + ": " + e.what());
+  }
 
   const Site_input input = read_sites(command.input, command.diagram.read_options);
   const std::string input_file = command.input == "-" ? "<stdin>" : command.input;
@@ -73,8 +75,10 @@ int run(const Centroidal_command& command, std::ostream& out, std::ostream& err)
     result = centroidal_diagram(input.sites, masses, domain, options);
   } catch (const Centroidal_parameter_error& e) {
     // Bad parameters the library found (a site outside the domain, two sites at one centre), at the line of
-    // the site they concern. The masses' own errors were found by read_masses, at theirs.
-    const bool about_site = e.site >= 0 && static_cast<std::size_t>(e.site) < input.lines.size();
+    // the site they concern. The masses' own errors were found by read_masses, at theirs, with the same
+    // reasons as the library's.
+    const bool about_site = e.parameter == Centroidal_parameter::sites && e.site >= 0 &&
+                            static_cast<std::size_t>(e.site) < input.lines.size();
     throw Input_error(input_file, about_site ? input.lines[e.site] : 0,
                       (e.site >= 0 ? "site " + std::to_string(e.site) + ": " : std::string()) + e.what());
   }
@@ -124,7 +128,7 @@ Command_run add_centroidal_command(CLI::App& app) {
       ->type_name("T")
       ->capture_default_str();
   sub->add_option("--max-iterations", command->max_iterations, "stop after K iterations (exit 1 if not converged)")
-      ->check(integer_in_range(1, 100000))
+      ->check(integer_in_range(1, kMostCentroidalIterations))
       ->type_name("K")
       ->capture_default_str();
   add_output_option(*sub, command->output);

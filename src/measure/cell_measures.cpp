@@ -29,6 +29,7 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
   tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, sites.size(), [&](std::size_t i) {
+      throw_if_cancelled(options.cancellation);  // a throw cancels the parallel loop
       if (!active[i]) return;
       // Start from the vertex neighbours; while some ray reaches its face's clearance, take in every site
       // that can come within 1.5 times the exits seen on some face. Terminates: each round takes in at

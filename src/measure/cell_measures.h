@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "diagram/diagram.h"
 #include "measure/radial_cut.h"
 #include "predicates/axis_box.h"
@@ -46,6 +47,9 @@ struct Measure_options {
   double relative_tolerance = 1e-8;  // per cell: estimated errors <= tolerance x volume (x distance
                                      //   integral for it)
   int threads = 1;
+  // When given, another thread may request it: measure_cells then throws Cancelled (it checks once per
+  // cell) and returns nothing.
+  const Cancellation* cancellation = nullptr;
 };
 
 // The measures of every cell of `diagram` (the certified diagram of `sites`) within `domain`, in site

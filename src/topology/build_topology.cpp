@@ -32,9 +32,12 @@ Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, co
   tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, diagram.vertices.size(),
-                      [&](std::size_t v) { departures[v] = vertex_departures(sites, diagram.vertices[v]); });
+                      [&](std::size_t v) {
+                        throw_if_cancelled(options.cancellation);  // a throw cancels the parallel loop
+                        departures[v] = vertex_departures(sites, diagram.vertices[v]);
+                      });
   });
-  topology.edges = edges_through_vertices(sites, diagram, departures, options.threads);
+  topology.edges = edges_through_vertices(sites, diagram, departures, options.threads, options.cancellation);
   std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
   topology.vertices = std::move(diagram);
   return topology;
@@ -59,27 +62,28 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   Topology_statistics& s = topology.statistics;
   s.edges_seconds = seconds(start);
   start = Clock::now();
-  Vertex_free_parts parts = vertex_free_parts(sites, topology.vertices, topology.edges, regions, options.threads);
+  Vertex_free_parts parts =
+      vertex_free_parts(sites, topology.vertices, topology.edges, regions, options.threads, options.cancellation);
   for (Diagram_edge& e : parts.edges) topology.edges.push_back(std::move(e));
   std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
   s.vertex_free_seconds = seconds(start);
   s.candidate_triples = parts.candidate_triples;
   s.candidate_pairs = parts.candidate_pairs;
   start = Clock::now();
-  add_faces_and_cells(sites, topology, parts.sheets, regions.escaping, options.threads);
+  add_faces_and_cells(sites, topology, parts.sheets, regions.escaping, options.threads, options.cancellation);
   s.faces_seconds = seconds(start);
   return topology;
 }
 
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
                          const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
-                         const std::vector<Site_index>& escaping, int threads) {
+                         const std::vector<Site_index>& escaping, int threads, const Cancellation* cancellation) {
   const auto escapes = [&](Site_index s) { return std::binary_search(escaping.begin(), escaping.end(), s); };
   const Diagram& diagram = topology.vertices;
   for (const auto& [a, b] : whole_sheets) topology.faces.push_back({a, b, {}, false});
   // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
   // (face_nesting.h). Faces are sorted by pair, then by their boundary.
-  const std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges);
+  const std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges, cancellation);
   struct Pair_components {
     std::vector<const Boundary_component*> components;
     Face_grouping grouping;  // filled when the components' nesting must be decided
@@ -101,7 +105,9 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
-      if (pairs[k].nested) pairs[k].grouping = group_components(sites, diagram, topology.edges, pairs[k].components);
+      if (!pairs[k].nested) return;
+      throw_if_cancelled(cancellation);
+      pairs[k].grouping = group_components(sites, diagram, topology.edges, pairs[k].components, cancellation);
     });
   });
   for (const Pair_components& p : pairs) {

@@ -4,6 +4,7 @@
 
 #include <utility>
 
+#include "diagram/cancellation.h"
 #include "octree/octree_diagram.h"
 #include "topology/topology.h"
 
@@ -11,6 +12,9 @@ namespace apollonius {
 
 struct Topology_options {
   int threads = 1;
+  // When given, another thread may request it: every phase then throws Cancelled soon after (where each
+  // checks it: cancellation.h) and nothing is returned. It changes no output otherwise.
+  const Cancellation* cancellation = nullptr;
 };
 
 // The whole diagram of `sites` from its complete vertex diagram and the regions of the same octree run
@@ -31,6 +35,7 @@ Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, co
 // octree's escaping sites, or every site): a face of two sites not both in it is bounded.
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
                          const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
-                         const std::vector<Site_index>& escaping, int threads = 1);
+                         const std::vector<Site_index>& escaping, int threads = 1,
+                         const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -88,31 +88,38 @@ std::vector<std::array<std::size_t, 2>> sectors_at_vertex(const std::vector<Site
 }  // namespace
 
 std::vector<Boundary_component> boundary_components(const std::vector<Site>& sites, const Diagram& diagram,
-                                                    const std::vector<Diagram_edge>& edges) {
+                                                    const std::vector<Diagram_edge>& edges,
+                                                    const Cancellation* cancellation) {
   std::vector<Half_edge> halves;
-  for (std::size_t e = 0; e < edges.size(); ++e)
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    throw_if_cancelled(cancellation);
     for (const Pair& p : pairs_around(sites, diagram, edges[e])) halves.push_back({e, p});
+  }
 
   // At each vertex, the half-edges of one pair come in twos: link their ends (side 0: start, 1: end).
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::array<std::size_t, 2>> link(halves.size(), {kNone, kNone});  // 2 h + side of the other end
   std::map<std::pair<std::size_t, Pair>, std::vector<std::size_t>> at_vertex;  // (vertex, pair) -> 2 h + side
   for (std::size_t h = 0; h < halves.size(); ++h) {
+    if (h % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_edge& e = edges[halves[h].edge];
     if (e.start) at_vertex[{*e.start, halves[h].pair}].push_back(2 * h);
     if (e.end) at_vertex[{*e.end, halves[h].pair}].push_back(2 * h + 1);
   }
-  for (const auto& [key, ends] : at_vertex)
+  for (const auto& [key, ends] : at_vertex) {
+    throw_if_cancelled(cancellation);
     for (const auto& [x, y] : sectors_at_vertex(sites, diagram, edges, halves, key.first, key.second, ends)) {
       link[x / 2][x % 2] = y;
       link[y / 2][y % 2] = x;
     }
+  }
 
   // Walk: from a half-edge out of its end side, until back at the start or at infinity; an open chain is
   // then extended from the start's other side.
   std::vector<bool> visited(halves.size(), false);
   std::vector<Boundary_component> components;
   for (std::size_t first = 0; first < halves.size(); ++first) {
+    if (first % 4096 == 0) throw_if_cancelled(cancellation);
     if (visited[first]) continue;
     Boundary_component c;
     c.a = halves[first].pair.first;

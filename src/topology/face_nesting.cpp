@@ -140,7 +140,8 @@ struct Union_find {
 
 Face_grouping group_components(const std::vector<Site>& sites, const Diagram& diagram,
                                const std::vector<Diagram_edge>& edges,
-                               const std::vector<const Boundary_component*>& components) {
+                               const std::vector<const Boundary_component*>& components,
+                               const Cancellation* cancellation) {
   const Site_index a = components.front()->a, b = components.front()->b;
   std::vector<Pair_edge> pair_edges;
   for (std::size_t c = 0; c < components.size(); ++c)
@@ -174,6 +175,7 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   std::vector<Level_value> heights;
   std::vector<std::size_t> vertices_seen;  // a vertex ends several edges: one height
   for (const Pair_edge& pe : pair_edges) {
+    throw_if_cancelled(cancellation);
     const Trisector& t = *pe.trisector;
     for (const std::optional<std::size_t>& v : {pe.edge->start, pe.edge->end}) {
       if (!v || std::find(vertices_seen.begin(), vertices_seen.end(), *v) != vertices_seen.end()) continue;
@@ -205,6 +207,7 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   Union_find sets(components.size());
   std::vector<bool> unbounded(components.size(), false), crossed(components.size(), false);
   for (std::size_t l = 0; l < levels.size(); ++l) {
+    throw_if_cancelled(cancellation);
     struct Crossing {
       Level_value abscissa;
       std::size_t edge;

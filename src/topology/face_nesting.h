@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "topology/face_boundaries.h"
 
 namespace apollonius {
@@ -23,9 +24,11 @@ struct Face_grouping {
   std::vector<bool> bounded;                    // per face
 };
 
-// Precondition: every component is of the same pair, a < b.
+// Precondition: every component is of the same pair, a < b. Checks cancellation (cancellation.h) once
+// per edge of the pair while finding the critical heights, and per level line.
 Face_grouping group_components(const std::vector<Site>& sites, const Diagram& diagram,
                                const std::vector<Diagram_edge>& edges,
-                               const std::vector<const Boundary_component*>& components);
+                               const std::vector<const Boundary_component*>& components,
+                               const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -72,7 +72,8 @@ void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shap
 }  // namespace
 
 std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
-                                                 const std::vector<std::vector<Departure>>& departures, int threads) {
+                                                 const std::vector<std::vector<Departure>>& departures, int threads,
+                                                 const Cancellation* cancellation) {
   // Group by curve: (triple, vertex, direction, tie set), sorted by triple.
   struct Entry {
     std::array<Site_index, 3> triple;
@@ -91,6 +92,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, by_curve.size(), [&](std::size_t g) {
+      throw_if_cancelled(cancellation);
       const std::array<Site_index, 3>& triple = entries[group_start[g]].triple;
       const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
       const auto [kind, shape] = classify_trisector(trisector);

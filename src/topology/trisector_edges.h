@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "topology/topology.h"
 #include "topology/vertex_fan.h"
 
@@ -16,8 +17,9 @@ namespace apollonius {
 
 // The edges through the departures of every vertex (departures[v] for vertex id v), sorted as
 // Diagram_topology's. Throws std::logic_error if the departures along some curve do not alternate
-// (leaving, arriving), which would be a defect.
+// (leaving, arriving), which would be a defect. Checks cancellation (cancellation.h) once per curve.
 std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
-                                                 const std::vector<std::vector<Departure>>& departures, int threads);
+                                                 const std::vector<std::vector<Departure>>& departures, int threads,
+                                                 const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -17,10 +17,11 @@ bool holds(const std::vector<Site_index>& set, const std::vector<Site_index>& su
 
 }  // namespace
 
-void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t) {
+void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t, const Cancellation* cancellation) {
   const std::vector<Diagram_vertex>& vertices = t.vertices.vertices;
   std::vector<std::vector<Site_index>> covered(vertices.size());  // the sites of the edges at each vertex
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    if (e % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_edge& edge = t.edges[e];
     if (edge.tie_set.size() < 3 || !std::is_sorted(edge.tie_set.begin(), edge.tie_set.end()))
       violated("edge " + std::to_string(e) + " has no ascending tie set of 3 or more");
@@ -33,11 +34,13 @@ void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t
     }
   }
   for (std::size_t v = 0; v < vertices.size(); ++v) {
+    if (v % 4096 == 0) throw_if_cancelled(cancellation);
     std::sort(covered[v].begin(), covered[v].end());
     covered[v].erase(std::unique(covered[v].begin(), covered[v].end()), covered[v].end());
     if (covered[v] != vertices[v].tie_set) violated("the edges at vertex " + std::to_string(v) + " miss one of its sites");
   }
   for (std::size_t f = 0; f < t.faces.size(); ++f) {
+    if (f % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_face& face = t.faces[f];
     const std::vector<Site_index> pair{face.a, face.b};
     for (const std::vector<std::size_t>& component : face.boundary) {

@@ -5,10 +5,13 @@
 // std::logic_error, so that the command exits 3 and writes nothing.
 #pragma once
 
+#include "diagram/cancellation.h"
 #include "topology/topology.h"
 
 namespace apollonius {
 
-void validate_topology(const std::vector<Site>& sites, const Diagram_topology& topology);
+// Checks cancellation (cancellation.h) once per 4096 edges, vertices or faces.
+void validate_topology(const std::vector<Site>& sites, const Diagram_topology& topology,
+                       const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -166,7 +166,8 @@ class Located_witness {
 }  // namespace
 
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
-                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads) {
+                                    const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads,
+                                    const Cancellation* cancellation) {
   std::vector<std::vector<Site_index>> vertex_sets, edge_sets;
   for (const Diagram_vertex& v : diagram.vertices) vertex_sets.push_back(v.tie_set);
   for (const Diagram_edge& e : edges) edge_sets.push_back(e.tie_set);
@@ -177,6 +178,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   std::vector<std::pair<Triple, std::size_t>> triple_seen;
   std::vector<std::pair<Pair, std::size_t>> pair_seen;
   const auto note = [&](const std::vector<Site_index>& set, std::size_t box) {
+    throw_if_cancelled(cancellation);
     for (std::size_t i = 0; i < set.size(); ++i)
       for (std::size_t j = i + 1; j < set.size(); ++j) {
         pair_seen.push_back({{set[i], set[j]}, box});
@@ -188,7 +190,8 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   const auto grouped = [&](auto& seen, auto skip) {
     std::sort(seen.begin(), seen.end());
     std::vector<std::pair<typename std::decay_t<decltype(seen)>::value_type::first_type, Occurrences>> groups;
-    for (std::size_t i = 0; i < seen.size();) {
+    for (std::size_t i = 0, group = 0; i < seen.size(); ++group) {
+      if (group % 4096 == 0) throw_if_cancelled(cancellation);
       std::size_t end = i;
       Occurrences o;
       for (; end < seen.size() && seen[end].first == seen[i].first; ++end)
@@ -211,6 +214,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   // Each candidate's test is independent: in parallel, each into its own slot.
   std::vector<std::optional<Diagram_edge>> found(triples.size());
   const auto test_triple = [&](std::size_t c) {
+    throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
     const auto& [triple, seen] = triples[c];
     const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
     const auto [kind, shape] = classify_trisector(t);
@@ -259,6 +263,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   const auto pairs = grouped(pair_seen, [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
   parts.candidate_pairs = pairs.size();
   for (const auto& [pair, seen] : pairs) {
+    throw_if_cancelled(cancellation);
     const Site &a = sites[pair.first], &b = sites[pair.second];
     const std::vector<Site_index>* test = nullptr;
     for (std::size_t box : seen.boxes)

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "octree/octree_diagram.h"
 #include "topology/topology.h"
 
@@ -28,9 +29,10 @@ struct Vertex_free_parts {
 };
 
 // `edges` are the edges with a vertex. `regions` from the same octree run as `diagram` (or, for a
-// reference, no box and every active site in one far set).
+// reference, no box and every active site in one far set). Checks cancellation (cancellation.h) once per
+// box or far set whose candidates it lists, per 4096 candidates grouped, and per candidate tested.
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions,
-                                    int threads = 1);
+                                    int threads = 1, const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

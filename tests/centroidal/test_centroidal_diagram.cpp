@@ -4,8 +4,11 @@
 // shares nothing with the code path (plain doubles decide each sample's cell). Bad parameters throw.
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
+#include <thread>
+#include <tuple>
 
 #include "centroidal/centroidal_diagram.h"
 #include "io/read_masses.h"
@@ -203,4 +206,92 @@ TEST_CASE("bad parameters throw Centroidal_parameter_error naming the site or ma
   same_centre[3] = same_centre[0];
   CHECK(error_site(same_centre, masses, kUnitCube) == 3);
   CHECK(error_site(sites, masses, Axis_box{{0, 0, 0}, {1, 0, 1}}) == -1);
+}
+
+TEST_CASE("each bad parameter names its parameter, with the reason the command line gives") {
+  const std::vector<Site> sites = example_sites();
+  const std::vector<double> masses = example_masses();
+  const auto refused = [&](const std::vector<double>& m, const Axis_box& box, double tolerance, int iterations) {
+    Centroidal_options options;
+    options.tolerance = tolerance;
+    options.max_iterations = iterations;
+    try {
+      centroidal_diagram(sites, m, box, options);
+    } catch (const Centroidal_parameter_error& e) {
+      return std::make_tuple(e.parameter, e.site, std::string(e.what()));
+    }
+    return std::make_tuple(Centroidal_parameter::sites, -2L, std::string("no error"));
+  };
+  using P = Centroidal_parameter;
+  CHECK(refused(masses, kUnitCube, 0.7, 100) ==
+        std::make_tuple(P::tolerance, -1L, std::string("must lie in [1e-10, 0.5], not 0.69999999999999996")));
+  CHECK(refused(masses, kUnitCube, 1e-6, 0) ==
+        std::make_tuple(P::max_iterations, -1L, std::string("needs an integer from 1 to 100000, not 0")));
+  CHECK(refused(masses, Axis_box{{0, 0, 0}, {1, 1, INFINITY}}, 1e-6, 100) ==
+        std::make_tuple(P::domain, -1L, std::string("needs a finite number, not inf")));
+  CHECK(refused(masses, Axis_box{{0, 0, 0}, {1, 0, 1}}, 1e-6, 100) ==
+        std::make_tuple(P::domain, -1L, std::string("needs X0 < X1, Y0 < Y1 and Z0 < Z1 (a box with a volume)")));
+  std::vector<double> seven = masses;
+  seven.push_back(0.1);
+  CHECK(refused(seven, kUnitCube, 1e-6, 100) == std::make_tuple(P::masses, 6L, std::string("more masses than the 6 sites")));
+  std::vector<double> not_a_number = masses;
+  not_a_number[1] = NAN;
+  CHECK(refused(not_a_number, kUnitCube, 1e-6, 100) ==
+        std::make_tuple(P::masses, 1L, std::string("not a finite number: nan")));
+  CHECK(std::get<0>(refused(masses, Axis_box{{0, 0, 0}, {0.5, 1, 1}}, 1e-6, 100)) == P::sites);
+}
+
+TEST_CASE("a cancellation stops the loop: requested before, at once; during, Cancelled or the whole answer") {
+  const std::vector<Site> sites = example_sites();
+  const std::vector<double> masses = example_masses();
+  Cancellation cancellation;
+  cancellation.request();
+  Centroidal_options options;
+  options.cancellation = &cancellation;
+  CHECK_THROWS_AS(centroidal_diagram(sites, masses, kUnitCube, options), Cancelled);
+  // 30 sites: the octree's diagrams, whose phases and the cell measures check it too.
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> inside(0.05, 0.95);
+  std::vector<Site> many;
+  for (int i = 0; i < 30; ++i) many.push_back({inside(random), inside(random), inside(random), 0});
+  const std::vector<double> equal(30, 1.0 / 30);
+  Centroidal_options few;
+  few.max_iterations = 3;
+  const Centroidal_result whole = centroidal_diagram(many, equal, kUnitCube, few);
+  CHECK_THROWS_AS(centroidal_diagram(many, equal, kUnitCube, options), Cancelled);
+  // One never requested changes nothing.
+  const Cancellation never;
+  Centroidal_options unrequested = few;
+  unrequested.cancellation = &never;
+  const Centroidal_result same = centroidal_diagram(many, equal, kUnitCube, unrequested);
+  REQUIRE(same.history.size() == whole.history.size());
+  for (std::size_t i = 0; i < many.size(); ++i) {
+    CHECK(same.sites[i].x == whole.sites[i].x);
+    CHECK(same.sites[i].y == whole.sites[i].y);
+    CHECK(same.sites[i].z == whole.sites[i].z);
+    CHECK(same.sites[i].w == whole.sites[i].w);
+  }
+  int cancelled = 0;
+  for (int delay_ms : {1, 20, 100, 400}) {
+    CAPTURE(delay_ms);
+    Cancellation later;
+    Centroidal_options cancellable = few;
+    cancellable.cancellation = &later;
+    std::thread requester([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+      later.request();
+    });
+    try {
+      const Centroidal_result r = centroidal_diagram(many, equal, kUnitCube, cancellable);
+      CHECK(r.history.size() == whole.history.size());
+      for (std::size_t i = 0; i < many.size(); ++i) {
+        CHECK(r.sites[i].x == whole.sites[i].x);
+        CHECK(r.sites[i].w == whole.sites[i].w);
+      }
+    } catch (const Cancelled&) {
+      ++cancelled;
+    }
+    requester.join();
+  }
+  CHECK(cancelled >= 1);
 }

@@ -101,7 +101,7 @@ TEST_CASE("centroidal: usage errors name the option, exit 2, no output") {
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "0", "1"}, "X0 < X1, Y0 < Y1 and Z0 < Z1"},
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "nan"}, "needs a finite number"},
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "1", "--tolerance", "0"},
-            "--tolerance must lie in [1e-10, 0.5]"},
+            "--tolerance: must lie in [1e-10, 0.5]"},
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "1", "--max-iterations", "0"},
             "--max-iterations"}}) {
     std::string command_line;
