@@ -17,7 +17,7 @@ import sys, time
 import numpy as np
 import apollonius3d
 
-compute = getattr(apollonius3d, sys.argv[4])  # vertices, diagram or centroidal
+compute = getattr(apollonius3d, sys.argv[4])  # vertices, diagram, contacts or centroidal
 threads = int(sys.argv[1])
 if sys.argv[4] == "centroidal":
     example = sys.argv[5]
@@ -53,7 +53,8 @@ print("same" if same else "different", flush=True)
                                                     ("vertices", 2, 0.3), ("vertices", 2, 2.0), ("diagram", 1, 0.5),
                                                     ("diagram", 2, 1.5), ("diagram", 1, 7.0), ("diagram", 1, 13.0),
                                                     ("diagram", 2, 10.0), ("centroidal", 1, 0.5),
-                                                    ("centroidal", 1, 3.0), ("centroidal", 2, 2.0)])
+                                                    ("centroidal", 1, 3.0), ("centroidal", 2, 2.0), ("contacts", 1, 0.5),
+                                                    ("contacts", 1, 4.0), ("contacts", 2, 2.0)])
 def test_ctrl_c_stops_a_long_computation_within_a_second(function, threads, delay):
     child = subprocess.Popen(
         [sys.executable, "-c", CHILD, str(threads), str(REPOSITORY / "bench" / "data" / "pdb" / "1j3h.pdb"),
