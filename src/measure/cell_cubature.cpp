@@ -563,6 +563,7 @@ class Cell_integrator {
   // vanishes at both ends, which turns the (b - b*)^(1/2) and ^(3/2) behaviour at a located event into
   // smooth functions of s.
   bool panel(int face, double l, double r, bool force, const std::vector<int>& from) {
+    throw_if_cancelled(options_.cancellation);
     Values kronrod{}, gauss{};
     Errors inner{};
     std::array<Errors, 31> controlled{};
@@ -613,6 +614,7 @@ class Cell_integrator {
   // A bracket of width <= kEventWidth around an event: two-point Gauss, its error estimated by the
   // variation across it.
   void bracket(int face, double l, double r, const std::vector<int>& from) {
+    throw_if_cancelled(options_.cancellation);
     const double half = 0.5 * (r - l), middle = 0.5 * (l + r), x = half / std::sqrt(3.0);
     const Line_result left = integrate_line(face, middle - x, from), right = integrate_line(face, middle + x, from);
     Values value;

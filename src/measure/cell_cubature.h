@@ -38,6 +38,7 @@
 
 #include <limits>
 
+#include "diagram/cancellation.h"
 #include "measure/cell_measures.h"
 #include "measure/cut_candidates.h"
 
@@ -49,6 +50,7 @@ struct Cell_cubature_options {
   // the boundary areas are integrated and their errors controlled too (Cell_measure::contact_areas,
   // sphere_area). The box must then contain that ball.
   double clip_radius = std::numeric_limits<double>::infinity();
+  const Cancellation* cancellation = nullptr;  // checked once per outer panel and bracket
 };
 
 struct Cell_cubature_result {

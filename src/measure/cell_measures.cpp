@@ -23,7 +23,9 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
   std::vector<bool> active(sites.size(), true);
   for (const Hidden_site& h : diagram.hidden) active[h.site] = false;
   const std::vector<std::vector<Site_index>> neighbours = vertex_neighbours(diagram);
-  const Cell_cubature_options cubature{options.relative_tolerance};
+  Cell_cubature_options cubature;
+  cubature.relative_tolerance = options.relative_tolerance;
+  cubature.cancellation = options.cancellation;
 
   std::vector<Cell_measure> measures(sites.size());
   tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));

@@ -111,6 +111,7 @@ Contact_measures measure_contacts(const std::vector<Site>& sites, const Contact_
       Cell_cubature_options cubature;
       cubature.relative_tolerance = options.relative_tolerance;
       cubature.clip_radius = radius;
+      cubature.cancellation = options.cancellation;
       const Cell_cubature_result cell = integrate_cell(s, candidates, box, cubature);
       if (cell.clearance_exceeded) throw std::logic_error("measure_contacts: a clipped cell exceeded its clearance");
       const Cell_measure& measure = cell.measure;

@@ -18,7 +18,7 @@ struct Contact_options {
   double probe = 1.4;                 // P >= 0, Voronota's default
   double relative_tolerance = 1e-4;   // per cell: estimated errors <= this x its clipped volume and area
   int threads = 1;
-  const Cancellation* cancellation = nullptr;  // checked once per cell
+  const Cancellation* cancellation = nullptr;  // checked once per cell, and per panel of its cubature
 };
 
 // Invariant: a < b; the mean of the integrals over both cells, its error the mean of their estimates plus
