@@ -48,13 +48,7 @@ Contacts_result contacts_to_python(const Contact_measures& m, const Contact_opti
     const Contact& c = m.contacts[static_cast<std::size_t>(i)];
     pairs(i, 0) = c.a, pairs(i, 1) = c.b, area(i) = c.area, error(i) = c.error;
   }
-  const py::ssize_t h = static_cast<py::ssize_t>(m.hidden.size());
-  r.hidden = {py::array_t<std::int64_t>(h), py::array_t<std::int64_t>(h), py::array_t<bool>(h)};
-  for (py::ssize_t i = 0; i < h; ++i) {
-    const Hidden_site& s = m.hidden[static_cast<std::size_t>(i)];
-    r.hidden.site.mutable_at(i) = s.site, r.hidden.hidden_by.mutable_at(i) = s.hidden_by;
-    r.hidden.duplicate.mutable_at(i) = s.duplicate;
-  }
+  r.hidden = hidden_to_python(m.hidden);
   return r;
 }
 

@@ -18,6 +18,18 @@ std::string repr(const Vertices_result& r) {
 
 }  // namespace
 
+Hidden_sites hidden_to_python(const std::vector<Hidden_site>& hidden_sites) {
+  const py::ssize_t h = static_cast<py::ssize_t>(hidden_sites.size());
+  Hidden_sites hidden{py::array_t<std::int64_t>(h), py::array_t<std::int64_t>(h), py::array_t<bool>(h)};
+  for (py::ssize_t i = 0; i < h; ++i) {
+    const Hidden_site& hs = hidden_sites[static_cast<std::size_t>(i)];
+    hidden.site.mutable_at(i) = hs.site;
+    hidden.hidden_by.mutable_at(i) = hs.hidden_by;
+    hidden.duplicate.mutable_at(i) = hs.duplicate;
+  }
+  return hidden;
+}
+
 Vertices_result vertices_to_python(const Diagram& d, py::object stats) {
   const py::ssize_t m = static_cast<py::ssize_t>(d.vertices.size());
   py::array_t<double> points({m, py::ssize_t{4}});
@@ -25,14 +37,7 @@ Vertices_result vertices_to_python(const Diagram& d, py::object stats) {
   for (const Diagram_vertex& v : d.vertices) p = std::copy(v.rounded.begin(), v.rounded.end(), p);
   const Compressed_rows tie_sets =
       compressed_rows(d.vertices, [](const Diagram_vertex& v) -> const std::vector<Site_index>& { return v.tie_set; });
-  const py::ssize_t h = static_cast<py::ssize_t>(d.hidden.size());
-  Hidden_sites hidden{py::array_t<std::int64_t>(h), py::array_t<std::int64_t>(h), py::array_t<bool>(h)};
-  for (py::ssize_t i = 0; i < h; ++i) {
-    const Hidden_site& hs = d.hidden[static_cast<std::size_t>(i)];
-    hidden.site.mutable_at(i) = hs.site;
-    hidden.hidden_by.mutable_at(i) = hs.hidden_by;
-    hidden.duplicate.mutable_at(i) = hs.duplicate;
-  }
+  const Hidden_sites hidden = hidden_to_python(d.hidden);
   py::array_t<std::int64_t> without(static_cast<py::ssize_t>(d.sites_without_vertex.size()));
   std::copy(d.sites_without_vertex.begin(), d.sites_without_vertex.end(), without.mutable_data());
   return Vertices_result{d.site_count, points, Tie_sets{tie_sets.offsets, tie_sets.values}, hidden, without,

@@ -33,6 +33,9 @@ struct Vertices_result {
   pybind11::object stats;  // None unless asked for
 };
 
+// The hidden sites as arrays (vertices(), contacts()).
+Hidden_sites hidden_to_python(const std::vector<Hidden_site>& hidden);
+
 // The one copy of the vertices: from the Diagram into arrays that numpy allocates and owns.
 Vertices_result vertices_to_python(const Diagram& diagram, pybind11::object stats);
 

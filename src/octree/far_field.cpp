@@ -93,7 +93,8 @@ class Far_field {
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle) have
     // no vertex among themselves (lift_outside_span.h), wherever they are: nothing to refine.
     std::array<Site_index, 4> basis;
-    if (heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis) <= 2) {
+    const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
+    if (dimension <= 2) {
       patch_sites_.push_back(kept);
       return;
     }
@@ -101,7 +102,7 @@ class Far_field {
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
       patch_sites_.push_back(kept);
-      record_quadruples(kept);
+      record_quadruples(kept, dimension, basis);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
@@ -193,16 +194,14 @@ class Far_field {
 
   // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
   // of one of their quadruples (sorted; kept is ascending).
-  void record_quadruples(const std::vector<Site_index>& kept) {
+  // `dimension` and `basis`: heaviest_lift_basis of kept, 3 or more (refine() stops below).
+  void record_quadruples(const std::vector<Site_index>& kept, int dimension, const std::array<Site_index, 4>& basis) {
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
     // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
     // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
     // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
     // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
     // per kept set.
-    std::array<Site_index, 4> basis;
-    const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
-    if (dimension <= 2) return;  // refine() stops there before
     if (dimension == 3 && kept.size() > 4) {
       if (kept != last_kept_) {
         last_kept_ = kept;
