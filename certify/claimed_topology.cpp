@@ -12,16 +12,6 @@
 namespace apollonius {
 namespace {
 
-// The fewest sites of a set of the category: a bisector has exactly 2.
-std::size_t least_size(Topology_category category) {
-  switch (category) {
-    case Topology_category::bisectors: return 2;
-    case Topology_category::trisectors: return 3;
-    case Topology_category::quadrisectors: return 4;
-  }
-  return 0;
-}
-
 const char* singular(Topology_category category) {
   switch (category) {
     case Topology_category::bisectors: return "a bisector";

@@ -31,6 +31,16 @@ inline constexpr std::array<Topology_category, 3> topology_categories = {
     Topology_category::bisectors, Topology_category::trisectors, Topology_category::quadrisectors};
 const char* name_of(Topology_category category);  // "bisectors", "trisectors", "quadrisectors"
 
+// The fewest sites of a set of the category: a bisector has exactly 2.
+inline std::size_t least_size(Topology_category category) {
+  switch (category) {
+    case Topology_category::bisectors: return 2;
+    case Topology_category::trisectors: return 3;
+    case Topology_category::quadrisectors: return 4;
+  }
+  return 0;
+}
+
 struct Claimed_topology {
   std::array<Claimed_category, 3> categories;  // indexed by Topology_category
   const Claimed_category& operator[](Topology_category c) const { return categories[static_cast<std::size_t>(c)]; }

@@ -49,15 +49,6 @@ Category_judgement judge_category(const std::vector<std::vector<Site_index>>& ex
   return judgement;
 }
 
-std::size_t least_size(Topology_category category) {
-  switch (category) {
-    case Topology_category::bisectors: return 2;
-    case Topology_category::trisectors: return 3;
-    case Topology_category::quadrisectors: return 4;
-  }
-  return 0;
-}
-
 }  // namespace
 
 const char* name_of(Set_verdict verdict) {
