@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "diagram/cancellable_steps.h"
 #include "predicates/kernels.h"
 
 namespace apollonius {
@@ -23,7 +24,7 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   // Sorted by index, then each vertex moved once: they are large, and one copy of them at a time is enough.
   std::vector<std::size_t> order(vertices.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  cancellable_sort(order.begin(), order.end(), cancellation, [&](std::size_t a, std::size_t b) {
     const std::vector<Site_index>&u = vertices[a].first, &v = vertices[b].first;
     // One pass over the tie sets (lexicographic, a prefix first).
     const auto [p, q] = std::mismatch(u.begin(), u.end(), v.begin(), v.end());
@@ -32,8 +33,11 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
     return Kernel::compare(vertices[a].second, vertices[b].second) == Sign::NEGATIVE;
   });
   diagram.vertices.reserve(vertices.size());
-  for (std::size_t k : order)
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i % 4096 == 0) throw_if_cancelled(cancellation);
+    const std::size_t k = order[i];
     diagram.vertices.push_back(Diagram_vertex{std::move(vertices[k].first), std::move(vertices[k].second), rounded[k]});
+  }
   std::vector<std::pair<std::vector<Site_index>, Vertex>>().swap(vertices);
 
   std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);

@@ -17,6 +17,8 @@ constexpr std::size_t kLeafCandidates = 6;
 constexpr std::size_t kCachedQuadruples = 2048;
 // Each candidate is tested against this many of the best candidates at the box centre.
 constexpr std::size_t kWitnesses = 4;
+// Boxes filtered between two checks of the cancellation: about a millisecond.
+constexpr std::size_t kBoxesPerCancellationCheck = 1024;
 // Refining stops helping when the candidate count has not dropped for kStagnationLevels levels and the box
 // is tiny against its distance to every candidate centre (kTinyBox half-diagonals): refining cannot
 // separate candidates that tie at a point (a degenerate vertex) or along a curve. Boxes near site centres
@@ -115,7 +117,7 @@ template <class Kernel>
 void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int depth, int stagnant,
                             std::vector<Found_vertex>& out) {
   const std::size_t end = stack_.size();
-  ++counts_.boxes;
+  if (++counts_.boxes % kBoxesPerCancellationCheck == 0) throw_if_cancelled(cancellation_);
   // A seed box's candidates were just filtered by the propagation, against the same kind of witnesses.
   if (depth == 0)
     stack_.insert(stack_.end(), stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.begin() + static_cast<std::ptrdiff_t>(end));

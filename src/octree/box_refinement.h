@@ -17,6 +17,7 @@
 
 #include <vector>
 
+#include "diagram/cancellation.h"
 #include "predicates/axis_box.h"
 #include "predicates/centre_expansion.h"
 #include "octree/leaf_decision.h"
@@ -36,7 +37,9 @@ template <class Kernel>
 class Box_refinement {
  public:
   // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
-  Box_refinement(const std::vector<Site>& sites, const Axis_box& root) : sites_(sites), root_(root), star_(sites) {}
+  // `cancellation` is checked every thousand boxes or so (one seed box can take a second).
+  Box_refinement(const std::vector<Site>& sites, const Axis_box& root, const Cancellation* cancellation = nullptr)
+      : sites_(sites), root_(root), cancellation_(cancellation), star_(sites) {}
 
   // Appends every vertex located in the box (half-open, closed on the root's upper faces), with its tie set.
   // Precondition: `candidates` contains every site that owns a point of the closed box.
@@ -62,6 +65,7 @@ class Box_refinement {
 
   const std::vector<Site>& sites_;
   Axis_box root_;
+  const Cancellation* cancellation_;
   std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
   std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
   std::vector<Site_index> tie_;

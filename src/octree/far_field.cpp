@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "diagram/cancellable_steps.h"
 #include "predicates/kernels.h"
 #include "octree/leaf_decision.h"
 #include "octree/lift_span.h"
@@ -60,8 +61,9 @@ Interval interval_sqrt(const Interval& x) {
 template <class Kernel>
 class Far_field {
  public:
-  Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius)
-      : sites_(sites), origin_(origin), radius_(radius) {}
+  Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius,
+            const Cancellation* cancellation)
+      : sites_(sites), origin_(origin), radius_(radius), cancellation_(cancellation) {}
 
   // The root patches: a face of the direction cube, tau in [0, sqrt(3) / R] (|y| <= sqrt(3)).
   Patch root(int face) const {
@@ -71,6 +73,7 @@ class Far_field {
   // Termination: each call either stops or recurses into 8 children one level deeper, and stops at
   // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests and O(k log k) for the lift span.
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
+    throw_if_cancelled(cancellation_);
     std::vector<Site_index> kept = candidates;
     {
       const Far_field_rounding<Kernel> rounding;
@@ -225,6 +228,7 @@ class Far_field {
   bool last_on_one_line_ = false;
   std::array<double, 3> origin_;
   double radius_;
+  const Cancellation* cancellation_;
   std::vector<Quadruple_key> quadruples_;
   std::vector<std::vector<Site_index>> patch_sites_;
 };
@@ -245,7 +249,7 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   std::vector<std::vector<Quadruple_key>> by_face(6);
   std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
   tbb::parallel_for(0, 6, [&](int face) {
-    Far_field<Kernel> field(sites, origin, radius);
+    Far_field<Kernel> field(sites, origin, radius, cancellation);
     field.refine(field.root(face), escaping);
     by_face[face] = field.take_quadruples();
     sites_by_face[face] = field.take_patch_sites();
@@ -253,11 +257,11 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   std::vector<std::vector<Site_index>> patch_sites;
   for (auto& face : sites_by_face)
     for (auto& kept : face) patch_sites.push_back(std::move(kept));
-  std::sort(patch_sites.begin(), patch_sites.end());
+  cancellable_sort(patch_sites.begin(), patch_sites.end(), cancellation);
   patch_sites.erase(std::unique(patch_sites.begin(), patch_sites.end()), patch_sites.end());
   std::vector<Quadruple_key> quadruples;
   for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
-  std::sort(quadruples.begin(), quadruples.end());
+  cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
   quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
 
   // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
@@ -272,9 +276,8 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   });
   // A vertex with five or more tied sites is found from several of their quadruples: kept once.
   std::vector<Found_vertex> vertices;
-  for (auto& list : found)
-    for (Found_vertex& f : list) vertices.push_back(std::move(f));
-  std::stable_sort(vertices.begin(), vertices.end(), [](const Found_vertex& x, const Found_vertex& y) { return x.first < y.first; });
+  move_concatenated(found, vertices, cancellation);
+  cancellable_stable_sort(vertices.begin(), vertices.end(), cancellation, [](const Found_vertex& x, const Found_vertex& y) { return x.first < y.first; });
   std::vector<Found_vertex> unique;
   for (std::size_t i = 0; i < vertices.size();) {
     std::size_t end = i;

@@ -36,7 +36,7 @@ struct Far_field_vertices {
 
 // Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping`
 // must contain every site that owns a point outside the box, and the root box must contain the ball of
-// radius `radius` about `origin`. Checks cancellation (cancellation.h) before each quadruple's decision.
+// radius `radius` about `origin`. Checks cancellation (cancellation.h) at each patch and each quadruple.
 template <class Kernel>
 Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                 const std::array<double, 3>& origin, double radius, const Axis_box& root,

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "diagram/cancellable_steps.h"
 #include "octree/box_refinement.h"
 #include "octree/candidate_propagation.h"
 #include "octree/far_field.h"
@@ -99,26 +100,29 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.escaping_sites = escaping.size();
 
     found.resize(seeds.size());
-    tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box());
-    tbb::enumerable_thread_specific<std::vector<Octree_regions::Box>> regions;
+    tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation);
+    // Per seed box, as the vertices: one list per thread would grow to millions of boxes, and each of its
+    // reallocations would move them all at once.
+    std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
       throw_if_cancelled(options.cancellation);
       Box_refinement<Kernel>& local = refinement.local();
-      if (options.regions != nullptr) local.record_regions(&regions.local());
+      if (options.regions != nullptr) local.record_regions(&seed_regions[k]);
       local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
     });
     if (options.regions != nullptr) {
       Octree_regions& r = *options.regions;
       r = {};
       r.root = partition.root_box();
-      for (std::size_t id = 0; id < partition.id_count(); ++id)
+      for (std::size_t id = 0; id < partition.id_count(); ++id) {
+        if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
         if (partition.is_box(id) && candidates[id].size() >= 2 && candidates[id].size() < 4)
           r.boxes.push_back({partition.box(id), candidates[id]});
-      for (auto& list : regions)
-        for (Octree_regions::Box& b : list) r.boxes.push_back(std::move(b));
+      }
+      move_concatenated(seed_regions, r.boxes, options.cancellation);
       // The boxes are disjoint: their lower corners order them, whatever the threads did.
-      std::sort(r.boxes.begin(), r.boxes.end(),
-                [](const Octree_regions::Box& x, const Octree_regions::Box& y) { return x.box.lo < y.box.lo; });
+      cancellable_sort(r.boxes.begin(), r.boxes.end(), options.cancellation,
+                       [](const Octree_regions::Box& x, const Octree_regions::Box& y) { return x.box.lo < y.box.lo; });
     }
     for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();
@@ -139,13 +143,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.far_field_quadruples = far.quadruples;
     statistics.far_field_seconds = timer.lap();
   });
-  std::size_t total = vertices.size();
-  for (const auto& f : found) total += f.size();
-  vertices.reserve(total);  // exactly: capacity doubling would hold up to twice the vertices at the peak
-  for (auto& f : found) {
-    std::move(f.begin(), f.end(), std::back_inserter(vertices));
-    std::vector<Found_vertex>().swap(f);  // freed now: the vertices are large, and peak memory is reported
-  }
+  move_concatenated(found, vertices, options.cancellation);  // the vertices are large: one copy at a time
   if (exponent != 0) {
     for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
     if (options.regions != nullptr) unscale_regions(*options.regions, exponent);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "diagram/cancellable_steps.h"
 #include "topology/face_boundaries.h"
 #include "topology/face_nesting.h"
 #include "topology/trisector_edges.h"
@@ -38,7 +39,7 @@ Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, co
                       });
   });
   topology.edges = edges_through_vertices(sites, diagram, departures, options.threads, options.cancellation);
-  std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
+  cancellable_sort(topology.edges.begin(), topology.edges.end(), options.cancellation, edge_order);
   topology.vertices = std::move(diagram);
   return topology;
 }
@@ -65,7 +66,7 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   Vertex_free_parts parts =
       vertex_free_parts(sites, topology.vertices, topology.edges, regions, options.threads, options.cancellation);
   for (Diagram_edge& e : parts.edges) topology.edges.push_back(std::move(e));
-  std::sort(topology.edges.begin(), topology.edges.end(), edge_order);
+  cancellable_sort(topology.edges.begin(), topology.edges.end(), options.cancellation, edge_order);
   s.vertex_free_seconds = seconds(start);
   s.candidate_triples = parts.candidate_triples;
   s.candidate_pairs = parts.candidate_pairs;
@@ -90,7 +91,12 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
     bool nested = false;
   };
   std::vector<Pair_components> pairs;
+  std::size_t pair_count = 0;
+  for (std::size_t i = 0; i < components.size(); ++i)
+    if (i == 0 || components[i].a != components[i - 1].a || components[i].b != components[i - 1].b) ++pair_count;
+  pairs.reserve(pair_count);  // a million of them: reallocations would move them all at once
   for (std::size_t i = 0; i < components.size();) {
+    if (pairs.size() % 4096 == 0) throw_if_cancelled(cancellation);
     Pair_components p;
     const Boundary_component& c = components[i];
     for (; i < components.size() && components[i].a == c.a && components[i].b == c.b; ++i)
@@ -110,7 +116,9 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
       pairs[k].grouping = group_components(sites, diagram, topology.edges, pairs[k].components, cancellation);
     });
   });
-  for (const Pair_components& p : pairs) {
+  for (std::size_t q = 0; q < pairs.size(); ++q) {
+    if (q % 4096 == 0) throw_if_cancelled(cancellation);
+    const Pair_components& p = pairs[q];
     const Boundary_component& c = *p.components.front();
     if (!p.nested) {
       topology.faces.push_back({c.a, c.b, {c.edges}, c.closed});
@@ -123,7 +131,7 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
       topology.faces.push_back(std::move(face));
     }
   }
-  std::sort(topology.faces.begin(), topology.faces.end(), [](const Diagram_face& x, const Diagram_face& y) {
+  cancellable_sort(topology.faces.begin(), topology.faces.end(), cancellation, [](const Diagram_face& x, const Diagram_face& y) {
     return std::tie(x.a, x.b, x.boundary) < std::tie(y.a, y.b, y.boundary);
   });
   std::vector<bool> hidden(sites.size(), false);
@@ -131,6 +139,7 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
   std::vector<Diagram_cell> cells(sites.size());
   for (Site_index s = 0; s < sites.size(); ++s) cells[s] = {s, {}, true};
   for (std::size_t f = 0; f < topology.faces.size(); ++f) {
+    if (f % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_face& face = topology.faces[f];
     for (Site_index s : {face.a, face.b}) {
       cells[s].faces.push_back(f);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "diagram/cancellable_steps.h"
 #include "predicates/trisector_predicates.h"
 
 namespace apollonius {
@@ -80,9 +81,14 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
     Departure_on_curve departure;
   };
   std::vector<Entry> entries;
-  for (std::size_t v = 0; v < departures.size(); ++v)
+  std::size_t total = 0;
+  for (const std::vector<Departure>& at_vertex : departures) total += at_vertex.size();
+  entries.reserve(total);
+  for (std::size_t v = 0; v < departures.size(); ++v) {
+    if (v % 4096 == 0) throw_if_cancelled(cancellation);
     for (const Departure& d : departures[v]) entries.push_back({d.triple, {v, d.direction, &d.tie_set}});
-  std::stable_sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) { return x.triple < y.triple; });
+  }
+  cancellable_stable_sort(entries.begin(), entries.end(), cancellation, [](const Entry& x, const Entry& y) { return x.triple < y.triple; });
   std::vector<std::size_t> group_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
@@ -102,8 +108,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
     });
   });
   std::vector<Diagram_edge> edges;
-  for (auto& list : by_curve)
-    for (Diagram_edge& e : list) edges.push_back(std::move(e));
+  move_concatenated(by_curve, edges, cancellation);
   return edges;
 }
 

@@ -1,11 +1,13 @@
 #include "topology/vertex_free.h"
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "diagram/cancellable_steps.h"
 #include "predicates/arc_witness.h"
 #include "predicates/rational_between.h"
 #include "predicates/rounding_guard.h"
@@ -19,12 +21,16 @@ namespace {
 using Triple = std::array<Site_index, 3>;
 using Pair = std::pair<Site_index, Site_index>;
 
-// For each site, the ids (ascending) of the items whose site sets hold it.
-template <class Sets>
-std::vector<std::vector<std::size_t>> by_site(std::size_t site_count, const Sets& sets) {
+// For each site, the ids (ascending) of the items whose site sets hold it: the items 0 to count - 1, whose
+// sets set_of(i) gives.
+template <class Set_of>
+std::vector<std::vector<std::size_t>> by_site(std::size_t site_count, std::size_t count, Set_of set_of,
+                                              const Cancellation* cancellation) {
   std::vector<std::vector<std::size_t>> lists(site_count);
-  for (std::size_t i = 0; i < sets.size(); ++i)
-    for (Site_index s : sets[i]) lists[s].push_back(i);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i % 4096 == 0) throw_if_cancelled(cancellation);
+    for (Site_index s : set_of(i)) lists[s].push_back(i);
+  }
   return lists;
 }
 
@@ -168,10 +174,9 @@ class Located_witness {
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads,
                                     const Cancellation* cancellation) {
-  std::vector<std::vector<Site_index>> vertex_sets, edge_sets;
-  for (const Diagram_vertex& v : diagram.vertices) vertex_sets.push_back(v.tie_set);
-  for (const Diagram_edge& e : edges) edge_sets.push_back(e.tie_set);
-  const auto vertices_of_site = by_site(sites.size(), vertex_sets);
+  const auto vertices_of_site = by_site(
+      sites.size(), diagram.vertices.size(), [&](std::size_t v) -> const auto& { return diagram.vertices[v].tie_set; },
+      cancellation);
 
   // Candidate triples and pairs, where each was seen: (set, box) occurrences, sorted and grouped.
   constexpr std::size_t kFar = static_cast<std::size_t>(-1);
@@ -185,10 +190,17 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
         for (std::size_t k = j + 1; k < set.size(); ++k) triple_seen.push_back({{set[i], set[j], set[k]}, box});
       }
   };
+  // Reserved exactly: doubling a vector of tens of millions of occurrences copies it without a check.
+  std::size_t pair_count = 0, triple_count = 0;
+  const auto count = [&](std::size_t k) { pair_count += k * (k - 1) / 2, triple_count += k * (k - 1) * (k - 2) / 6; };
+  for (const Octree_regions::Box& box : regions.boxes) count(box.sites.size());
+  for (const std::vector<Site_index>& set : regions.far_sets) count(set.size());
+  pair_seen.reserve(pair_count);
+  triple_seen.reserve(triple_count);
   for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
   for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
   const auto grouped = [&](auto& seen, auto skip) {
-    std::sort(seen.begin(), seen.end());
+    cancellable_sort(seen.begin(), seen.end(), cancellation);
     std::vector<std::pair<typename std::decay_t<decltype(seen)>::value_type::first_type, Occurrences>> groups;
     for (std::size_t i = 0, group = 0; i < seen.size(); ++group) {
       if (group % 4096 == 0) throw_if_cancelled(cancellation);
@@ -211,8 +223,9 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   const auto in_root = [&](const Curve_point& w) {
     return regions.boxes.size() > 0 && curve_point_in_box(w, regions.root);
   };
-  // Each candidate's test is independent: in parallel, each into its own slot.
-  std::vector<std::optional<Diagram_edge>> found(triples.size());
+  // Each candidate's test is independent: in parallel, each into its own slot. (Pointers: few candidates
+  // are edges, and a million empty edges took a fifth of a second to allocate.)
+  std::vector<std::unique_ptr<Diagram_edge>> found(triples.size());
   const auto test_triple = [&](std::size_t c) {
     throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
     const auto& [triple, seen] = triples[c];
@@ -226,7 +239,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     if (filtered == Filtered_outcome::no_edge) return;
     if (filtered == Filtered_outcome::edge) {
       e.tie_set.assign(triple.begin(), triple.end());
-      found[c] = std::move(e);
+      found[c] = std::make_unique<Diagram_edge>(std::move(e));
       return;
     }
     const Curve_point w = arc_witness(t, std::nullopt, std::nullopt);
@@ -247,19 +260,23 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     });
     if (!tie || !std::equal(triple.begin(), triple.end(), tie->begin())) return;  // not in it, or not its smallest triple
     e.tie_set = *tie;
-    found[c] = std::move(e);
+    found[c] = std::make_unique<Diagram_edge>(std::move(e));
   };
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] { tbb::parallel_for(std::size_t{0}, triples.size(), test_triple); });
   Vertex_free_parts parts;
   parts.candidate_triples = triples.size();
-  for (std::optional<Diagram_edge>& e : found)
-    if (e) {
-      edge_sets.push_back(e->tie_set);
-      parts.edges.push_back(std::move(*e));
-    }
+  for (std::size_t c = 0; c < found.size(); ++c) {
+    if (c % 4096 == 0) throw_if_cancelled(cancellation);
+    if (found[c]) parts.edges.push_back(std::move(*found[c]));
+  }
+  std::vector<std::unique_ptr<Diagram_edge>>().swap(found);
 
-  const auto edges_of_site = by_site(sites.size(), edge_sets);
+  // The edges through vertices, then the vertex-free ones.
+  const auto edges_of_site = by_site(
+      sites.size(), edges.size() + parts.edges.size(),
+      [&](std::size_t e) -> const auto& { return (e < edges.size() ? edges[e] : parts.edges[e - edges.size()]).tie_set; },
+      cancellation);
   const auto pairs = grouped(pair_seen, [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
   parts.candidate_pairs = pairs.size();
   for (const auto& [pair, seen] : pairs) {

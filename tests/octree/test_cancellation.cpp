@@ -1,11 +1,14 @@
 // Cancellation (diagram/cancellation.h): a requested cancellation stops every phase of octree_diagram with
 // Cancelled, whenever it comes, and leaves nothing half done (the next computation is whole); one that is
-// never requested changes no output.
+// never requested changes no output. The bulk steps between phases (diagram/cancellable_steps.h) too.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <random>
 #include <thread>
 
+#include "diagram/cancellable_steps.h"
 #include "diagram/cancellation.h"
 #include "diagram/site_set.h"
 #include "octree/candidate_propagation.h"
@@ -106,4 +109,42 @@ TEST_CASE("a cancellation requested during the computation gives Cancelled or th
     }
     MESSAGE("threads " << threads << ": " << cancelled << " of 10 runs cancelled");
   }
+}
+
+TEST_CASE("the cancellable bulk steps equal the plain ones, and stop when cancellation is requested") {
+  std::mt19937_64 random(20261125);
+  std::vector<std::pair<int, int>> items(200000);
+  for (std::size_t i = 0; i < items.size(); ++i) items[i] = {static_cast<int>(random() % 1000), static_cast<int>(i)};
+  const auto by_key = [](const std::pair<int, int>& x, const std::pair<int, int>& y) { return x.first < y.first; };
+  std::vector<std::pair<int, int>> expected = items;
+  std::stable_sort(expected.begin(), expected.end(), by_key);
+  const Cancellation never;
+  for (const Cancellation* cancellation : {static_cast<const Cancellation*>(nullptr), &never}) {
+    std::vector<std::pair<int, int>> sorted = items;
+    cancellable_stable_sort(sorted.begin(), sorted.end(), cancellation, by_key);
+    CHECK(sorted == expected);  // equal keys keep their order (the second members ascend)
+    sorted = items;
+    cancellable_sort(sorted.begin(), sorted.end(), cancellation);
+    CHECK(std::is_sorted(sorted.begin(), sorted.end()));
+    CHECK(std::is_permutation(sorted.begin(), sorted.end(), items.begin()));
+
+    std::vector<std::vector<int>> lists = {{1, 2}, {}, {3}, std::vector<int>(10000, 4)};
+    std::vector<int> out = {0};
+    move_concatenated(lists, out, cancellation);
+    REQUIRE(out.size() == 10004);
+    CHECK(std::vector<int>(out.begin(), out.begin() + 5) == std::vector<int>{0, 1, 2, 3, 4});
+    CHECK(std::all_of(lists.begin(), lists.end(), [](const std::vector<int>& l) { return l.capacity() == 0; }));
+  }
+
+  Cancellation requested;
+  requested.request();
+  std::vector<std::pair<int, int>> sorted = items;
+  CHECK_THROWS_AS(cancellable_sort(sorted.begin(), sorted.end(), &requested), Cancelled);
+  CHECK(std::is_permutation(sorted.begin(), sorted.end(), items.begin()));  // valid, in some order
+  CHECK_THROWS_AS(cancellable_stable_sort(sorted.begin(), sorted.end(), &requested, by_key), Cancelled);
+  std::vector<std::pair<int, int>> two(items.begin(), items.begin() + 2);  // too short to check within
+  CHECK_THROWS_AS(cancellable_sort(two.begin(), two.end(), &requested), Cancelled);
+  std::vector<std::vector<int>> lists = {std::vector<int>(10000, 4)};
+  std::vector<int> out;
+  CHECK_THROWS_AS(move_concatenated(lists, out, &requested), Cancelled);
 }
