@@ -126,9 +126,11 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
   const std::size_t kept = stack_.size() - end;
   const auto record = [&] {
     if (regions_ == nullptr || kept < 2) return;
-    std::vector<Site_index> sites(stack_.begin() + static_cast<std::ptrdiff_t>(end), stack_.end());
+    regions_->emplace_back();
+    regions_->back().box = box;
+    Octree_regions::Sites& sites = regions_->back().sites;
+    sites.assign(stack_.begin() + static_cast<std::ptrdiff_t>(end), stack_.end());
     std::sort(sites.begin(), sites.end());
-    regions_->push_back({box, std::move(sites)});
   };
   if (kept < 4) record();
   if (kept >= 4) {

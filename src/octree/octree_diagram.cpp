@@ -117,7 +117,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       for (std::size_t id = 0; id < partition.id_count(); ++id) {
         if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
         if (partition.is_box(id) && candidates[id].size() >= 2 && candidates[id].size() < 4)
-          r.boxes.push_back({partition.box(id), candidates[id]});
+          r.boxes.push_back({partition.box(id), Octree_regions::Sites(candidates[id].begin(), candidates[id].end())});
       }
       move_concatenated(seed_regions, r.boxes, options.cancellation);
       // The boxes are disjoint: their lower corners order them, whatever the threads did.

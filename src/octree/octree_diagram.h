@@ -21,6 +21,8 @@
 
 #include <vector>
 
+#include <boost/container/small_vector.hpp>
+
 #include "predicates/axis_box.h"
 #include "diagram/cancellation.h"
 #include "diagram/diagram.h"
@@ -44,9 +46,12 @@ enum class Arithmetic { certified, floating };
 // some box, whose sites include its owners (the completeness argument above); every point outside R is
 // owned by escaping sites.
 struct Octree_regions {
+  // Inline up to a leaf's candidates: a large input has millions of boxes, and allocating (and, on Ctrl-C,
+  // freeing) a vector for each took a large part of the whole diagram's time.
+  using Sites = boost::container::small_vector<Site_index, 6>;
   struct Box {
     Axis_box box;
-    std::vector<Site_index> sites;  // ascending, 2 or more
+    Sites sites;  // ascending, 2 or more
   };
   std::vector<Box> boxes;  // the boxes with 2 or more sites, tiling R with those of 0 or 1
   Axis_box root;
