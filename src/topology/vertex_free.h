@@ -9,8 +9,12 @@
 //    against the sites of a box that contains it, or against the escaping sites;
 //  - likewise a pair with no edge has a face only as a whole sheet, decided at the sheet's point on the
 //    segment between the two centres (sheet_point.h), which lies in the sites' bounding box, inside R.
+//  - an unbounded part (a whole sheet, a hyperbola branch, a parabola) has points of its sites' cells
+//    arbitrarily far, so all its sites escape: only pairs of escaping sites, and only ellipses or triples
+//    of escaping sites, are tested.
 // Cost: O(k^3) candidate triples per box of k sites, sorted and grouped; each candidate with no vertex
-// costs one witness, filtered, tested in parallel with `threads`.
+// costs one classification, and those that pass the escaping test one witness, filtered, tested in
+// parallel with `threads`.
 #pragma once
 
 #include <utility>
