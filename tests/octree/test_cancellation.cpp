@@ -118,6 +118,8 @@ TEST_CASE("the cancellable bulk steps equal the plain ones, and stop when cancel
   const auto by_key = [](const std::pair<int, int>& x, const std::pair<int, int>& y) { return x.first < y.first; };
   std::vector<std::pair<int, int>> expected = items;
   std::stable_sort(expected.begin(), expected.end(), by_key);
+  std::vector<std::pair<int, int>> in_order = items;
+  std::sort(in_order.begin(), in_order.end());
   const Cancellation never;
   for (const Cancellation* cancellation : {static_cast<const Cancellation*>(nullptr), &never}) {
     std::vector<std::pair<int, int>> sorted = items;
@@ -125,8 +127,7 @@ TEST_CASE("the cancellable bulk steps equal the plain ones, and stop when cancel
     CHECK(sorted == expected);  // equal keys keep their order (the second members ascend)
     sorted = items;
     cancellable_sort(sorted.begin(), sorted.end(), cancellation);
-    CHECK(std::is_sorted(sorted.begin(), sorted.end()));
-    CHECK(std::is_permutation(sorted.begin(), sorted.end(), items.begin()));
+    CHECK(sorted == in_order);
 
     std::vector<std::vector<int>> lists = {{1, 2}, {}, {3}, std::vector<int>(10000, 4)};
     std::vector<int> out = {0};
@@ -140,7 +141,8 @@ TEST_CASE("the cancellable bulk steps equal the plain ones, and stop when cancel
   requested.request();
   std::vector<std::pair<int, int>> sorted = items;
   CHECK_THROWS_AS(cancellable_sort(sorted.begin(), sorted.end(), &requested), Cancelled);
-  CHECK(std::is_permutation(sorted.begin(), sorted.end(), items.begin()));  // valid, in some order
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(sorted == in_order);  // the same elements, in some order
   CHECK_THROWS_AS(cancellable_stable_sort(sorted.begin(), sorted.end(), &requested, by_key), Cancelled);
   std::vector<std::pair<int, int>> two(items.begin(), items.begin() + 2);  // too short to check within
   CHECK_THROWS_AS(cancellable_sort(two.begin(), two.end(), &requested), Cancelled);
