@@ -11,6 +11,7 @@
 #include "predicates/kernels.h"
 #include "octree/leaf_decision.h"
 #include "octree/lift_span.h"
+#include "octree/lifted_triangulation.h"
 
 namespace apollonius {
 namespace {
@@ -61,9 +62,10 @@ Interval interval_sqrt(const Interval& x) {
 template <class Kernel>
 class Far_field {
  public:
+  // With record_quadruples false, the patches give their sites only (the quadruples come from elsewhere).
   Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius,
-            const Cancellation* cancellation)
-      : sites_(sites), origin_(origin), radius_(radius), cancellation_(cancellation) {}
+            bool record_quadruples, const Cancellation* cancellation)
+      : sites_(sites), origin_(origin), radius_(radius), record_(record_quadruples), cancellation_(cancellation) {}
 
   // The root patches: a face of the direction cube, tau in [0, sqrt(3) / R] (|y| <= sqrt(3)).
   Patch root(int face) const {
@@ -105,7 +107,7 @@ class Far_field {
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
       patch_sites_.push_back(kept);
-      record_quadruples(kept, dimension, basis);
+      if (record_) record_quadruples(kept, dimension, basis);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
@@ -228,41 +230,65 @@ class Far_field {
   bool last_on_one_line_ = false;
   std::array<double, 3> origin_;
   double radius_;
+  bool record_;
   const Cancellation* cancellation_;
   std::vector<Quadruple_key> quadruples_;
   std::vector<std::vector<Site_index>> patch_sites_;
 };
+
+// Whether lifted_triangulation.h's condition holds for every vertex outside R among the escaping sites: a
+// tie site i of a vertex x there has distance t = |x - p_i| - w_i > radius - |p_i - O| - w_i, so t + w_j >= 0
+// for every j when the least such bound plus the least weight is >= 0. Outward-rounded intervals.
+bool lifts_cover_far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
+                              const std::array<double, 3>& origin, double radius) {
+  const CGAL::Protect_FPU_rounding<true> protect(CGAL_FE_UPWARD);
+  Interval least_distance(radius), least_weight(sites[escaping.front()].w);
+  for (Site_index s : escaping) {
+    const Site& p = sites[s];
+    const Interval dx = Interval(p.x) - origin[0], dy = Interval(p.y) - origin[1], dz = Interval(p.z) - origin[2];
+    least_distance = CGAL::min(least_distance, Interval(radius) - CGAL::sqrt(dx * dx + dy * dy + dz * dz) - p.w);
+    least_weight = CGAL::min(least_weight, Interval(p.w));
+  }
+  return (least_distance + least_weight).inf() >= 0;
+}
 
 }  // namespace
 
 template <class Kernel>
 Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
                                 const std::array<double, 3>& origin, double radius, const Axis_box& root,
-                                const Cancellation* cancellation) {
+                                bool with_patch_sites, const Cancellation* cancellation) {
   if (escaping.size() < 4) {
     Far_field_vertices none;
     if (escaping.size() >= 2) none.patch_sites.push_back(escaping);
     return none;
   }
-  // The six faces of the direction cube are refined independently; neighbouring patches share most of
-  // their quadruples, so those are collected first and each is decided once.
-  std::vector<std::vector<Quadruple_key>> by_face(6);
-  std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
-  tbb::parallel_for(0, 6, [&](int face) {
-    Far_field<Kernel> field(sites, origin, radius, cancellation);
-    field.refine(field.root(face), escaping);
-    by_face[face] = field.take_quadruples();
-    sites_by_face[face] = field.take_patch_sites();
-  });
-  std::vector<std::vector<Site_index>> patch_sites;
-  for (auto& face : sites_by_face)
-    for (auto& kept : face) patch_sites.push_back(std::move(kept));
-  cancellable_sort(patch_sites.begin(), patch_sites.end(), cancellation);
-  patch_sites.erase(std::unique(patch_sites.begin(), patch_sites.end()), patch_sites.end());
+  // Candidate quadruples: the 3-faces of the escaping sites' lifted triangulation where it covers every
+  // vertex outside R (lifted_triangulation.h): O(E log E) for E escaping sites, whatever their ties at
+  // infinity. Otherwise (weights far larger than the sites' spread) the patches' sites enumerated.
+  const bool lifted = lifts_cover_far_vertices(sites, escaping, origin, radius);
   std::vector<Quadruple_key> quadruples;
-  for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
-  cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
-  quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
+  if (lifted) quadruples = lifted_triangulation_quadruples(sites, escaping, cancellation);
+  std::vector<std::vector<Site_index>> patch_sites;
+  if (!lifted || with_patch_sites) {
+    // The six faces of the direction cube are refined independently; neighbouring patches share most of
+    // their quadruples, so those are collected first and each is decided once.
+    std::vector<std::vector<Quadruple_key>> by_face(6);
+    std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
+    tbb::parallel_for(0, 6, [&](int face) {
+      Far_field<Kernel> field(sites, origin, radius, !lifted, cancellation);
+      field.refine(field.root(face), escaping);
+      by_face[face] = field.take_quadruples();
+      sites_by_face[face] = field.take_patch_sites();
+    });
+    for (auto& face : sites_by_face)
+      for (auto& kept : face) patch_sites.push_back(std::move(kept));
+    cancellable_sort(patch_sites.begin(), patch_sites.end(), cancellation);
+    patch_sites.erase(std::unique(patch_sites.begin(), patch_sites.end()), patch_sites.end());
+    for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
+    cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
+    quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
+  }
 
   // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
   // point there), with its tie set among them.
@@ -290,10 +316,10 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
 }
 
 template Far_field_vertices far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
-                                                          const std::array<double, 3>&, double, const Axis_box&,
+                                                          const std::array<double, 3>&, double, const Axis_box&, bool,
                                                           const Cancellation*);
 template Far_field_vertices far_vertices<Floating_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
-                                                         const std::array<double, 3>&, double, const Axis_box&,
+                                                         const std::array<double, 3>&, double, const Axis_box&, bool,
                                                          const Cancellation*);
 
 }  // namespace apollonius

@@ -134,7 +134,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     }
     statistics.refinement_seconds = timer.lap();
     Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(),
-                                                  partition.root_box(), options.cancellation);
+                                                  partition.root_box(), options.regions != nullptr, options.cancellation);
     vertices = std::move(far.vertices);
     if (options.regions != nullptr) {
       options.regions->escaping = escaping;

@@ -72,7 +72,7 @@ TEST_CASE("a cancellation requested before the call stops it, and every phase ch
   const Seed_partition partition(sites, all, 32);
   CHECK_THROWS_AS(propagate_candidates(sites, all, partition, 1, &cancellation), Cancelled);
   CHECK_THROWS_AS(far_vertices<Certified_kernel>(sites, all, partition.origin(), partition.root_radius(),
-                                                 partition.root_box(), &cancellation),
+                                                 partition.root_box(), true, &cancellation),
                   Cancelled);
   // Assembly, on the vertices of a small diagram.
   const Diagram small = octree_diagram(generate_sites(Site_family::uniform, 10, 1));

@@ -81,6 +81,15 @@ TEST_CASE("regression: far_field_slow_for_cluster_and_two_balls_1e9_away") {
   CHECK(statistics.far_field_quadruples < 1000);
 }
 
+// Balls on one circle with mixed weights (the differential test's circle-mixed family, seed 270): ties
+// at infinity that no patch separates, so the patches enumerated 212,499 quadruples (2 s, 184 MB). The
+// far field now takes the 3-faces of the escaping sites' lifted triangulation (lifted_triangulation.h).
+TEST_CASE("regression: far_field_enumerated_quadruples_of_circle_mixed_55_270") {
+  const Octree_statistics statistics =
+      check_octree_equals_brute_force("far_field_enumerated_quadruples_of_circle_mixed_55_270.balls");
+  CHECK(statistics.far_field_quadruples < 2000);
+}
+
 // Too large for the brute force (C(300, 4) quadruples): every vertex is validated exactly against every
 // site, and Voronota finds the same 870 (bench/README.md, certify on Ext_I_Congruent_300).
 TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {

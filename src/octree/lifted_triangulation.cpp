@@ -1,0 +1,87 @@
+#include "octree/lifted_triangulation.h"
+
+#include <CGAL/Epeck_d.h>
+#include <CGAL/Epick_d.h>
+#include <CGAL/Regular_triangulation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "diagram/cancellable_steps.h"
+
+namespace apollonius {
+namespace {
+
+struct Lifted_site {
+  std::int64_t index = -1;  // the site's index, -1 until set
+};
+template <class Lift_kernel>
+using Lift_triangulation = CGAL::Regular_triangulation<
+    Lift_kernel,
+    CGAL::Triangulation_data_structure<
+        CGAL::Dimension_tag<4>,
+        CGAL::Triangulation_vertex<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>, Lifted_site>,
+        CGAL::Triangulation_full_cell<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>>>>;
+
+template <class Lift_kernel>
+std::vector<std::array<Site_index, 4>> quadruples_with(const std::vector<Site>& sites,
+                                                      const std::vector<Site_index>& subset,
+                                                      const Cancellation* cancellation) {
+  using Triangulation = Lift_triangulation<Lift_kernel>;
+  using FT = typename Lift_kernel::FT;
+  Triangulation triangulation(4);
+
+  for (std::size_t k = 0; k < subset.size(); ++k) {
+    if (k % 256 == 0) throw_if_cancelled(cancellation);
+    const Site& s = sites[subset[k]];
+    const FT w(s.w);
+    const typename Triangulation::Weighted_point lift(typename Lift_kernel::Point_d(FT(s.x), FT(s.y), FT(s.z), w), FT(2) * w * w);
+    const typename Triangulation::Vertex_handle v = triangulation.insert(lift);
+    // A repeated lift is a repeated site: the first keeps the vertex (tie sets are completed by the caller).
+    if (v != typename Triangulation::Vertex_handle() && v->data().index < 0) v->data().index = subset[k];
+  }
+  std::vector<std::array<Site_index, 4>> quadruples;
+  const int dimension = triangulation.current_dimension();
+  if (dimension < 3) return quadruples;
+  std::size_t visited = 0;
+  for (auto cell = triangulation.full_cells_begin(); cell != triangulation.full_cells_end(); ++cell) {
+    if (++visited % 4096 == 0) throw_if_cancelled(cancellation);
+    // Dimension 3: the finite cells are the 3-simplices; dimension 4: their facets, finite cells' or not.
+    for (int omitted = dimension == 4 ? 0 : 4; omitted <= 4; ++omitted) {
+      std::array<Site_index, 4> quadruple;
+      int size = 0;
+      bool finite = true;
+      for (int i = 0; i <= dimension && finite; ++i) {
+        if (i == omitted) continue;
+        const auto v = cell->vertex(i);
+        if (triangulation.is_infinite(v)) finite = false;
+        else quadruple[size++] = static_cast<Site_index>(v->data().index);
+      }
+      if (!finite || size != 4) continue;
+      std::sort(quadruple.begin(), quadruple.end());
+      quadruples.push_back(quadruple);
+    }
+  }
+  cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
+  quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
+  return quadruples;
+}
+
+}  // namespace
+
+std::vector<std::array<Site_index, 4>> lifted_triangulation_quadruples(const std::vector<Site>& sites,
+                                                                        const std::vector<Site_index>& subset,
+                                                                        const Cancellation* cancellation) {
+  // The lifts' weights 2 w^2 are doubles exactly when w^2 is: then the filtered kernel of doubles decides
+  // exactly, else the lazy exact one.
+  const bool exact_squares = std::all_of(subset.begin(), subset.end(), [&](Site_index s) {
+    const double w = sites[s].w;
+    // (A square below 2^-969 could hide its rounding error below the subnormals.)
+    return w == 0 || (std::fma(w, w, -(w * w)) == 0 && std::abs(w * w) >= 0x1p-969 && std::isfinite(2 * w * w));
+  });
+  if (exact_squares) return quadruples_with<CGAL::Epick_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
+  return quadruples_with<CGAL::Epeck_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
+}
+
+}  // namespace apollonius

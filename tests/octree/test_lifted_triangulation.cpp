@@ -1,0 +1,102 @@
+// lifted_triangulation.h's claim, checked against the brute-force diagram: every vertex whose distance t
+// has t + w_j >= 0 for all sites j is a root of a quadruple of its tie set that spans a 3-face of the
+// lifted triangulation. On every generator family (lattices, ties at one point and along a circle, 1-ulp
+// noise, duplicates, mixed signs), with the condition certified from the correctly rounded distance.
+#include <doctest/doctest.h>
+
+#include <CGAL/FPU.h>
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "octree/lifted_triangulation.h"
+#include "reference/brute_force_diagram.h"
+#include "reference/site_generators.h"
+#include "support/time_limit.h"
+
+using namespace apollonius;
+
+namespace {
+
+using Lifted_face = std::array<Site_index, 4>;
+
+// t + w_j >= 0 for every active site j, certified: the rounded distance r is within half an ulp of t.
+bool condition_certified(const Diagram_vertex& v, const std::vector<Site>& sites, const std::vector<Site_index>& active) {
+  const CGAL::Protect_FPU_rounding<true> protect(CGAL_FE_UPWARD);
+  const double r = v.rounded[3];
+  if (!std::isfinite(r)) return false;
+  const double half_ulp = (std::nextafter(std::abs(r), INFINITY) - std::abs(r)) / 2;
+  const CGAL::Interval_nt<false> t(-(half_ulp - r), r + half_ulp);
+  for (Site_index j : active)
+    if (!((t + sites[j].w).inf() >= 0)) return false;
+  return true;
+}
+
+// Whether some 4 sites of the (ascending) tie set form a quadruple of the set.
+bool has_face(const std::vector<Site_index>& tie, const std::set<Lifted_face>& faces) {
+  const std::size_t k = tie.size();
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = a + 1; b < k; ++b)
+      for (std::size_t c = b + 1; c < k; ++c)
+        for (std::size_t d = c + 1; d < k; ++d)
+          if (faces.count({tie[a], tie[b], tie[c], tie[d]})) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("every vertex meeting the condition has a 3-face of the lifted triangulation among its tie set") {
+  std::size_t checked = 0, skipped = 0;
+  for (const Site_family_description& family : kSiteFamilies) {
+    const bool slow = family.family == Site_family::lattice_noise || family.family == Site_family::wide_range;
+    for (std::uint64_t seed = 1; seed <= (slow ? 5u : 40u); ++seed) {
+      const std::size_t n = 5 + seed % 21;
+      const std::vector<Site> sites = generate_sites(family.family, n, seed);
+      CAPTURE(std::string(family.name));
+      CAPTURE(seed);
+      CAPTURE(n);
+      testing::Input_time_limit limit(30.0, std::string(family.name) + " seed " + std::to_string(seed) + " n " + std::to_string(n));
+      const Diagram diagram = brute_force_diagram(sites);
+      std::vector<bool> hidden(sites.size(), false);
+      for (const Hidden_site& h : diagram.hidden) hidden[h.site] = true;
+      std::vector<Site_index> active;
+      for (Site_index s = 0; s < sites.size(); ++s)
+        if (!hidden[s]) active.push_back(s);
+      const std::vector<Lifted_face> list = lifted_triangulation_quadruples(sites, active);
+      CHECK(std::is_sorted(list.begin(), list.end()));
+      CHECK(std::adjacent_find(list.begin(), list.end()) == list.end());
+      const std::set<Lifted_face> faces(list.begin(), list.end());
+      for (const Diagram_vertex& v : diagram.vertices) {
+        if (!condition_certified(v, sites, active)) {
+          ++skipped;
+          continue;
+        }
+        ++checked;
+        CAPTURE(v.rounded[0]);
+        CAPTURE(v.rounded[1]);
+        CAPTURE(v.rounded[2]);
+        CHECK(has_face(v.tie_set, faces));
+      }
+      limit.stop();
+    }
+  }
+  MESSAGE("vertices checked: " << checked << ", without the certified condition: " << skipped);
+  CHECK(checked > 10 * skipped);
+}
+
+TEST_CASE("fewer than four lifts, or lifts spanning less than a 3-space, give no quadruple") {
+  const std::vector<Site> sites = {{0, 0, 0, 1}, {4, 0, 0, 1}, {0, 4, 0, 1}, {4, 4, 0, 1}, {8, 0, 0, 1}};
+  CHECK(lifted_triangulation_quadruples(sites, {0, 1, 2}).empty());
+  // Five coplanar sites of one weight: their lifts span a plane.
+  CHECK(lifted_triangulation_quadruples(sites, {0, 1, 2, 3, 4}).empty());
+  // One more weight lifts them into a 3-space: the quadruples with that site.
+  std::vector<Site> more = sites;
+  more.push_back({2, 2, 0, 2});
+  const auto q = lifted_triangulation_quadruples(more, {0, 1, 2, 3, 4, 5});
+  CHECK_FALSE(q.empty());
+}
