@@ -184,6 +184,24 @@ bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut)
   return certain_sign(euclidean_product(cut, g.e1)) == Sign::ZERO && certain_sign(euclidean_product(cut, g.e2)) == Sign::ZERO;
 }
 
+bool level_asymptote(const Trisector& trisector, const Vector4<Rational>& cut) {
+  const auto value = [&](const auto& g, const auto& c) {
+    const auto a = euclidean_product(c, g.e1), b = euclidean_product(c, g.e2);
+    return a * a * g.gamma2 + b * b * g.gamma1;
+  };
+  {
+    Rounding_guard guard;
+    try {
+      const Trisector_geometry<Interval>& g = trisector.geometry<Interval>();
+      if (g.kind != Trisector_kind::hyperbola) return false;
+      if (certain_sign(value(g, to_vector<Interval>(cut))) != Sign::ZERO) return false;
+    } catch (const Uncertain_sign&) {
+    }
+  }
+  const Trisector_geometry<Rational>& g = trisector.geometry<Rational>();
+  return g.kind == Trisector_kind::hyperbola && certain_sign(value(g, cut)) == Sign::ZERO;
+}
+
 bool on_sheet(const Curve_point& p) {
   {
     Rounding_guard guard;

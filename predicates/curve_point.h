@@ -50,6 +50,13 @@ bool on_sheet(const Curve_point& p);
 // but one (the cut's normal is orthogonal to L's directions). Exact.
 bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut);
 
+// Whether cut . X tends to a finite limit along an end of the trisector, a hyperbola: an asymptote of the
+// branch is parallel to the hyperplanes cut . X = offset, so those on one side of the limit miss that end.
+// In trisector.h's basis, X = C + s e1 + t e2 with gamma1 s^2 + gamma2 t^2 = K tends to the asymptotes
+// t = +-sqrt(-gamma1 / gamma2) s, along which cut . X - cut . C = (a + b t / s) s, a = cut . e1, b = cut . e2,
+// stays bounded iff a^2 gamma2 + b^2 gamma1 = 0. Exact.
+bool level_asymptote(const Trisector& trisector, const Vector4<Rational>& cut);
+
 // The coordinates of a point of the trisector t (a vertex on it, or a curve point of it) in t's frame.
 template <class NT>
 Field_point<NT> field_point_on(const Trisector& t, const Vertex& v) {

@@ -159,14 +159,19 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
                   Rational(sites[b].z) - Rational(sites[a].z)};
   Vector3 e{}, d{};
   bool found = false;
-  // Each edge's plane rules out at most one direction e across the pair (its normal), and the axes
-  // (1, j, j^2) give pairwise independent directions: some j among the first 2 k + 4 works.
-  for (std::size_t j = 0; j < 2 * pair_edges.size() + 4 && !found; ++j) {
+  // Nor an asymptote of a hyperbola edge: a level limit along an end would be a critical height that no
+  // vertex or extreme point gives, and the lines on its far side would miss the edge. Each edge's plane
+  // rules out at most one direction e across the pair (its normal), and the axes (1, j, j^2) give pairwise
+  // independent directions (two values of j at most); a level asymptote is a quartic in j, not zero
+  // everywhere (the sheet is a graph over the plane across the pair, paper Theorem 3, so no asymptote is
+  // parallel to p_b - p_a): some j among the first 6 k + 4 works.
+  for (std::size_t j = 0; j < 6 * pair_edges.size() + 4 && !found; ++j) {
     const Vector3 axis{Rational(1), Rational(static_cast<long>(j)), Rational(static_cast<long>(j * j))};
     e = cross(n, axis);
     if (is_zero(e)) continue;
-    found = std::none_of(pair_edges.begin(), pair_edges.end(),
-                         [&](const Pair_edge& pe) { return parallel_to_plane(*pe.trisector, level_cut(e)); });
+    found = std::none_of(pair_edges.begin(), pair_edges.end(), [&](const Pair_edge& pe) {
+      return parallel_to_plane(*pe.trisector, level_cut(e)) || level_asymptote(*pe.trisector, level_cut(e));
+    });
   }
   if (!found) throw std::logic_error("face nesting: no level direction crosses every edge of the pair");
   d = cross(n, e);
@@ -206,6 +211,13 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
 
   Union_find sets(components.size());
   std::vector<bool> unbounded(components.size(), false), crossed(components.size(), false);
+  // The far ends of the lines: no edge's level stays bounded along its ends (no level asymptote, above), so
+  // beyond all crossings, on the left of the lines (d -> -infinity) between any two levels, no edge
+  // passes: the left ends of all lines lie in one piece of the face or all outside it, and so do the right
+  // ends. A line that no edge crosses joins its two ends.
+  std::optional<std::size_t> far_left, far_right;  // a component next to the far left (right) in the face
+  std::optional<bool> left_in_face;                 // whether the far left is in the face
+  bool crossing_free_line = false;
   for (std::size_t l = 0; l < levels.size(); ++l) {
     throw_if_cancelled(cancellation);
     struct Crossing {
@@ -219,7 +231,10 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
       for (const Curve_point& p : curve_points(t, level_cut(e), level_offset(e, t.origin(), levels[l])))
         if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, d), i, p});
     }
-    if (crossings.empty()) continue;
+    if (crossings.empty()) {
+      crossing_free_line = true;
+      continue;
+    }
     std::sort(crossings.begin(), crossings.end(),
               [](const Crossing& x, const Crossing& y) { return compare_levels(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
     // The face at the first crossing: on its +d side or before it; then it alternates.
@@ -230,6 +245,9 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
     const bool after_first = face_side(crossings.front().point, sites[a], sites[b], sites[third], e, d) == Sign::POSITIVE;
     const bool outermost = l == 0 || l + 1 == levels.size();
     bool inside = !after_first;  // before the first crossing
+    if (left_in_face && *left_in_face != inside)
+      throw std::logic_error("face nesting: the far ends of the level lines are not all on one side");
+    left_in_face = inside;
     std::optional<std::size_t> left;  // the component at the interval's left end
     for (std::size_t k = 0; k <= crossings.size(); ++k) {
       const std::optional<std::size_t> right =
@@ -237,6 +255,11 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
       if (right) crossed[*right] = true;
       if (inside) {
         if (left && right) sets.join(*left, *right);
+        for (auto [end, far] : {std::pair{right, &far_left}, std::pair{left, &far_right}})
+          if (end && !(left && right)) {
+            if (*far) sets.join(**far, *end);
+            *far = end;
+          }
         for (const std::optional<std::size_t>& end : {left, right})
           if (end && (!left || !right || outermost)) unbounded[*end] = true;
       }
@@ -244,6 +267,7 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
       inside = !inside;
     }
   }
+  if (crossing_free_line && far_left && far_right) sets.join(*far_left, *far_right);
   for (std::size_t c = 0; c < components.size(); ++c)
     if (!crossed[c]) throw std::logic_error("face nesting: a boundary component no level line crosses");
 

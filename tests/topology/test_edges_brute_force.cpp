@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +44,38 @@ bool tie_heavy(const std::string& name) {
          name == "circle" || name == "circle-mixed";
 }
 
+// Builds the topology of the sites and checks it against the reference; returns the reference's edges,
+// or nothing when build_topology stopped (a failure).
+std::optional<std::vector<Diagram_edge>> check_against_reference(const std::vector<Site>& sites) {
+  const Diagram diagram = brute_force_diagram(sites);
+  std::vector<Diagram_edge> reference = brute_force_edges(sites, diagram);
+  Diagram_topology t;
+  try {
+    t = build_topology(sites, diagram, regions_for_every_site(diagram));
+    validate_topology(sites, t);
+  } catch (const std::logic_error& e) {
+    FAIL_CHECK("build_topology: " << std::string(e.what()));
+    return std::nullopt;
+  }
+  std::size_t i = 0, j = 0;
+  while (i < t.edges.size() || j < reference.size()) {
+    if (i < t.edges.size() && j < reference.size() && same(t.edges[i], reference[j])) {
+      ++i, ++j;
+      continue;
+    }
+    const bool ours_first = j == reference.size() ||
+                            (i < t.edges.size() && std::tie(t.edges[i].tie_set, t.edges[i].start, t.edges[i].end) <
+                                                       std::tie(reference[j].tie_set, reference[j].start, reference[j].end));
+    if (ours_first)
+      FAIL_CHECK("only the topology layer: " << describe(t.edges[i++]));
+    else
+      FAIL_CHECK("only the reference: " << describe(reference[j++]));
+  }
+  CHECK(t.edges.size() == reference.size());
+  CHECK(euler_defect(t) == 0);
+  return reference;
+}
+
 void check_families(bool heavy) {
   std::size_t inputs = 0, edges = 0, vertex_free = 0;
   for (const std::string& name : site_family_names()) {
@@ -52,36 +85,12 @@ void check_families(bool heavy) {
       CAPTURE(name);
       CAPTURE(n);
       CAPTURE(seed);
-      const std::vector<Site> sites = generate_sites(site_family_from_name(name), n, seed);
-      const Diagram diagram = brute_force_diagram(sites);
-      const std::vector<Diagram_edge> expected = brute_force_edges(sites, diagram);
-      Diagram_topology t;
-      try {
-        t = build_topology(sites, diagram, regions_for_every_site(diagram));
-      } catch (const std::logic_error& e) {
-        FAIL_CHECK("build_topology: " << std::string(e.what()));
-        continue;
-      }
-      for (const Diagram_edge& e : expected) vertex_free += e.start || e.end ? 0 : 1;
-      std::size_t i = 0, j = 0;
-      const std::vector<Diagram_edge>& reference = expected;
-      while (i < t.edges.size() || j < reference.size()) {
-        if (i < t.edges.size() && j < reference.size() && same(t.edges[i], reference[j])) {
-          ++i, ++j;
-          continue;
-        }
-        const bool ours_first = j == reference.size() ||
-                                (i < t.edges.size() && std::tie(t.edges[i].tie_set, t.edges[i].start, t.edges[i].end) <
-                                                           std::tie(reference[j].tie_set, reference[j].start, reference[j].end));
-        if (ours_first)
-          FAIL_CHECK("only the topology layer: " << describe(t.edges[i++]));
-        else
-          FAIL_CHECK("only the reference: " << describe(reference[j++]));
-      }
-      CHECK(t.edges.size() == reference.size());
-      CHECK(euler_defect(t) == 0);
+      const std::optional<std::vector<Diagram_edge>> reference =
+          check_against_reference(generate_sites(site_family_from_name(name), n, seed));
+      if (!reference) continue;
+      for (const Diagram_edge& e : *reference) vertex_free += e.start || e.end ? 0 : 1;
       ++inputs;
-      edges += reference.size();
+      edges += reference->size();
     }
   }
   MESSAGE(inputs << " inputs, " << edges << " edges (" << vertex_free << " with no vertex), all equal");
@@ -89,28 +98,49 @@ void check_families(bool heavy) {
   CHECK(edges > 10 * inputs);
 }
 
+std::vector<Site> regression_sites(const std::string& name) {
+  return read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name + ".balls", {}).sites;
+}
+
 }  // namespace
 
 TEST_CASE("edges equal the brute-force reference on every family") { check_families(false); }
 
-// Open defects (docs/history.md): on these families a few inputs stop build_topology (two tangent edges
-// of one face that second order does not order; an Euler defect that the validator catches). Reported
-// here on every run, not yet a failure of the suite.
+// Open defect (docs/history.md): on these families a few inputs stop build_topology (two tangent edges of
+// one face that second order does not order). Reported here on every run, not yet a failure of the suite.
 TEST_CASE("edges equal the brute-force reference on the tie-heavy families" * doctest::may_fail()) {
   check_families(true);
 }
 
-// The open defects' inputs, kept under the names of what they showed: each is reported as not decided
-// or invalid (an exception, exit 3 in the command), never answered with a wrong diagram. When one is
-// fixed, its line here becomes an equality with the brute force.
+// The open defect's input, kept under the name of what it showed: reported as not decided (an exception,
+// exit 3 in the command), never answered with a wrong diagram. When fixed, it becomes an equality with the
+// brute force, as the two regressions below.
 TEST_CASE("open defects are reported, never answered wrongly") {
-  for (const char* name : {"topology_tangent_edges_not_decided_circle_tangent_10_5",
-                           "topology_euler_defect_circle_mixed_9_4", "topology_component_no_level_line_crosses"}) {
+  for (const char* name : {"topology_tangent_edges_not_decided_circle_tangent_10_5"}) {
     CAPTURE(name);
-    const std::vector<Site> sites =
-        read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name + ".balls", {}).sites;
+    const std::vector<Site> sites = regression_sites(name);
     const Diagram diagram = brute_force_diagram(sites);
     CHECK_THROWS_AS(validate_topology(sites, build_topology(sites, diagram, regions_for_every_site(diagram))),
                     std::logic_error);
   }
+}
+
+// Fixed: two hyperbola edges of one face, opening away from each other, each crossed by the level lines of
+// its own slab only, and the slab between them crossed by none: the face (the band between them) was split
+// in two. The far ends of the level lines now join the components next to them (face_nesting.cpp).
+TEST_CASE("regression: topology_euler_defect_circle_mixed_9_4") {
+  const std::optional<std::vector<Diagram_edge>> reference =
+      check_against_reference(regression_sites("topology_euler_defect_circle_mixed_9_4"));
+  REQUIRE(reference);
+  CHECK(reference->size() == 5);
+}
+
+// Fixed: the face nesting's level direction made a hyperbola edge's asymptote level, so the lines on the far
+// side of its limit missed the edge (no vertex or extreme point gives that height). The direction now
+// avoids level asymptotes (curve_point.h, level_asymptote).
+TEST_CASE("regression: topology_component_no_level_line_crosses") {
+  const std::optional<std::vector<Diagram_edge>> reference =
+      check_against_reference(regression_sites("topology_component_no_level_line_crosses"));
+  REQUIRE(reference);
+  CHECK(reference->size() == 2);
 }
