@@ -72,6 +72,11 @@ class Vertex {
   const std::array<double, 4>& rounded() const;
   // The same if computed already, else null.
   const std::array<double, 4>* rounded_if_computed() const { return rounded_.get(); }
+  // The sign of x, y, z minus their rounded doubles (ZERO: the double is exact), computed exactly on first
+  // use: with rounded(), it orders the vertex against any double at once (vertex_in_box.h), where a vertex
+  // lying on box bounds (sites on a dyadic grid) would otherwise take an exact comparison per bound.
+  const std::array<Sign, 3>& rounding_sides() const;
+  const std::array<Sign, 3>* rounding_sides_if_computed() const { return sides_.get(); }
 
  private:
   Quadruple quadruple_;
@@ -79,6 +84,7 @@ class Vertex {
   Vertex_coordinates<Interval> box_;
   mutable std::shared_ptr<const Vertex_coordinates<Exact>> exact_;  // computed on first use
   mutable std::shared_ptr<const std::array<double, 4>> rounded_;     // computed on first use
+  mutable std::shared_ptr<const std::array<Sign, 3>> sides_;         // computed on first use
 };
 
 template <>

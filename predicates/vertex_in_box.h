@@ -37,13 +37,11 @@ class Coordinates_against_doubles<Exact> {
   Sign compare(int axis, double y) {
     const double rounded = vertex_.rounded()[axis];
     if (rounded != y) return rounded < y ? Sign::NEGATIVE : Sign::POSITIVE;
-    if (!exact_) exact_ = exact_point(vertex_);
-    return compare_numbers((*exact_)[axis], y);
+    return vertex_.rounding_sides()[axis];  // x - y = x - round(x)
   }
 
  private:
   const Vertex& vertex_;
-  std::optional<std::array<Root_number<Exact>, 4>> exact_;
 };
 
 struct Vertex_in_box_predicate {
@@ -51,13 +49,23 @@ struct Vertex_in_box_predicate {
 
   // Once an exact stage has rounded the vertex, its rounded point decides every bound it differs from, with
   // no interval (whose failure costs an exception: a fuzz input spent seconds throwing them).
-  static std::optional<bool> static_filter(const Vertex& v, const Axis_box& box, const std::array<bool, 3>&) {
+  // With the rounding sides too, every bound (vertex.h).
+  static std::optional<bool> static_filter(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
     const std::array<double, 4>* rounded = v.rounded_if_computed();
     if (rounded == nullptr) return std::nullopt;
+    const std::array<Sign, 3>* sides = v.rounding_sides_if_computed();
     bool inside = true;
     for (int a = 0; a < 3; ++a) {
       const double x = (*rounded)[a];
-      if (x == box.lo[a] || x == box.hi[a]) return std::nullopt;
+      if (x == box.lo[a] || x == box.hi[a]) {
+        if (sides == nullptr) return std::nullopt;
+        const Sign side = (*sides)[a];  // the sign of the coordinate minus x
+        if (x == box.lo[a] && side == Sign::NEGATIVE) return false;
+        if (x == box.hi[a] && (side == Sign::POSITIVE || (side == Sign::ZERO && !closed_above[a]))) return false;
+        if (x != box.lo[a] && !(box.lo[a] < x)) return false;
+        if (x != box.hi[a] && !(x < box.hi[a])) return false;
+        continue;
+      }
       inside = inside && box.lo[a] < x && x < box.hi[a];
     }
     return inside;

@@ -63,6 +63,19 @@ const std::array<double, 4>& Vertex::rounded() const {
   return *rounded_;
 }
 
+const std::array<Sign, 3>& Vertex::rounding_sides() const {
+  if (!sides_) {
+    const std::array<double, 4>& r = rounded();
+    const std::array<Root_number<Exact>, 4> p = exact_point(*this);
+    std::array<Sign, 3> sides;
+    // A coordinate beyond the double range rounds to an infinity, which no box bound equals: never asked.
+    for (int a = 0; a < 3; ++a)
+      sides[a] = std::isfinite(r[a]) ? compare(p[a], Root_number<Exact>{Exact(r[a]), Exact(0), Exact(0), Exact(1)}) : Sign::ZERO;
+    sides_ = std::make_shared<const std::array<Sign, 3>>(sides);
+  }
+  return *sides_;
+}
+
 std::array<double, 4> rounded_coordinates(const Vertex& v) {
   const std::array<std::optional<double>, 4> fast = certified_roundings(v);
   std::array<double, 4> rounded;

@@ -61,6 +61,9 @@ std::uint64_t seeds_for(Site_family family) {
 // Seconds one input may take, octree or brute force: APOLLONIUS_DIFFERENTIAL_TIME_LIMIT (default 60, so
 // that the sanitizer builds pass; the long runs set 1). Past it the program names the input and exits 124.
 double time_limit() { return seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60); }
+// Octree times above APOLLONIUS_DIFFERENTIAL_REPORT_OVER seconds (default: none) are listed, so that a long
+// run with a loose limit still names every slow input.
+double report_over() { return seconds_from_environment("APOLLONIUS_DIFFERENTIAL_REPORT_OVER", 1e300); }
 
 // The brute force on the sites of the family. The families scaled by 2^+-300 are the uniform family
 // scaled: their reference is the uniform family's diagram, scaled (exact: every value stays a normal
@@ -99,7 +102,9 @@ TEST_CASE("octree equals brute force on every generator family") {
       reference_limit.stop();
       Input_time_limit octree_limit(time_limit(), input + " (octree)");
       const Diagram octree = octree_diagram(sites);
-      slowest = std::max(slowest, std::make_pair(octree_limit.stop(), input));
+      const double seconds = octree_limit.stop();
+      if (seconds > report_over()) MESSAGE("octree " << seconds << " s: " << input);
+      slowest = std::max(slowest, std::make_pair(seconds, input));
       check_same(octree, reference);
       ++inputs;
       vertices += reference.vertices.size();

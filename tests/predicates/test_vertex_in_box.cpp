@@ -1,5 +1,6 @@
 // vertex_in_box's exact stage decides by the correctly rounded coordinates and falls back to Q(sqrt d) only
-// when one equals the box bound; once they are computed, its static filter decides by them too. Checked against the comparison in Q(sqrt d) alone, for boxes whose bounds
+// when one equals the box bound, once per vertex (rounding_sides); once they are computed, its static filter
+// decides by them too, every bound included. Checked against the comparison in Q(sqrt d) alone, for boxes whose bounds
 // sit on, next to and a few ulps from every coordinate of every vertex of every generator family, and of
 // the regression inputs that made the exact stage slow.
 #include <doctest/doctest.h>
