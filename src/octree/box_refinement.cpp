@@ -36,9 +36,15 @@ constexpr std::size_t kBoxesPerCancellationCheck = 1024;
 // the centres) + 7 levels down, for any number of tied sites, instead of descending to the last binade
 // (1,075 levels about v = 0). Along a curve of ties the same holds for the boxes that touch it.
 constexpr int kStagnationLevels = 4;
-// classify_tie is tried on a tiny box whose candidates did not drop from its parent's. Not waiting for
-// kStagnationLevels matters along a curve of ties near a tie point, where the candidates drop by one
-// every few levels (second-order separation) and the boxes along the curve double at every level.
+// A tiny box of more than kLeafCandidates whose candidates' lifts span at most a plane is settled at
+// once (no vertex among them, whatever the box). Along a line where many such sites tie (equal balls on a
+// circle, along its axis) the boxes beside the line keep losing a candidate or two per level, so waiting
+// for the count to stop dropping refined them all the way down: 1.8 million boxes for 51 balls, now
+// 56,000. A tie at one point is tried only once the candidates did not drop from the parent's: not
+// waiting for kStagnationLevels matters along a curve of ties near a tie point, where the candidates drop
+// by one every few levels (second-order separation) and the boxes along the curve double at every level;
+// trying it earlier gave the star (tie_point_star.h) boxes it separates worse (balls tangent to one
+// sphere, 1,000 of them: 1.4 s became 41 s).
 constexpr int kStagnationToClassify = 1;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
@@ -138,8 +144,8 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
                          (stagnant >= kStagnationLevels && kept <= kStagnantCandidates &&
                           tiny_against_candidates(box, end));
-    if (!settled && kept > kLeafCandidates && stagnant >= kStagnationToClassify && tiny_against_candidates(box, end)) {
-      const Tie tie = classify_tie(end);
+    if (!settled && kept > kLeafCandidates && tiny_against_candidates(box, end)) {
+      const Tie tie = classify_tie(end, stagnant >= kStagnationToClassify);
       if (tie != Tie::none) {
         record();
         if (tie == Tie::at_point) decide_tie_point_leaf(box, end, out);
@@ -271,14 +277,15 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
 // point, it is one of them (equidistant from the four, with r + w >= 0), and its k - 4 conflict tests
 // confirm it. A point found before is reused while K stays among its tie set.
 template <class Kernel>
-typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::size_t first) {
+typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::size_t first, bool at_point_too) {
   const auto kept = stack_.begin() + static_cast<std::ptrdiff_t>(first);
-  if (!tie_point_.empty() && std::all_of(kept, stack_.end(), [&](Site_index s) {
+  if (at_point_too && !tie_point_.empty() && std::all_of(kept, stack_.end(), [&](Site_index s) {
         return std::binary_search(tied_at_point_.begin(), tied_at_point_.end(), s);
       }))
     return Tie::at_point;
   std::array<Site_index, 4> basis;
   if (heaviest_lift_basis<Kernel>(sites_, kept, stack_.end(), basis) <= 2) return Tie::vertex_free;
+  if (!at_point_too) return Tie::none;
   const Quadruple_vertices roots = Kernel::vertices_of_quadruple(make_quadruple(basis, sites_));
   for (const Vertex& v : roots.vertices) {
     const bool all_tie = std::all_of(kept, stack_.end(), [&](Site_index s) {

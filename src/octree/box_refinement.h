@@ -57,10 +57,10 @@ class Box_refinement {
   void keep_undominated(const Axis_box& box, std::size_t first, std::size_t end);
   bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
-  // For a stagnant box of many candidates: whether their lifts span at most a plane (`vertex_free`), or
-  // all of them tie at one point, which tie_point_ then holds.
+  // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), or, if
+  // at_point_too, all of them tie at one point, which tie_point_ then holds.
   enum class Tie { none, vertex_free, at_point };
-  Tie classify_tie(std::size_t first);
+  Tie classify_tie(std::size_t first, bool at_point_too);
   void decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
 
   const std::vector<Site>& sites_;
