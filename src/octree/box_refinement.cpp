@@ -149,6 +149,7 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
       if (tie != Tie::none) {
         record();
         if (tie == Tie::at_point) decide_tie_point_leaf(box, end, out);
+        if (tie == Tie::on_one_line) decide_line_leaf(box, end, out);
         stack_.resize(end);
         return;
       }
@@ -284,7 +285,15 @@ typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::s
       }))
     return Tie::at_point;
   std::array<Site_index, 4> basis;
-  if (heaviest_lift_basis<Kernel>(sites_, kept, stack_.end(), basis) <= 2) return Tie::vertex_free;
+  const int dimension = heaviest_lift_basis<Kernel>(sites_, kept, stack_.end(), basis);
+  if (dimension <= 2) return Tie::vertex_free;
+  if (dimension == 3) {
+    const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
+    if (std::none_of(kept, stack_.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); })) {
+      line_basis_ = basis;
+      return Tie::on_one_line;
+    }
+  }
   if (!at_point_too) return Tie::none;
   const Quadruple_vertices roots = Kernel::vertices_of_quadruple(make_quadruple(basis, sites_));
   for (const Vertex& v : roots.vertices) {
@@ -298,6 +307,33 @@ typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::s
     return Tie::at_point;
   }
   return Tie::none;
+}
+
+// The candidates' lifts and power lifts span a 3-space (classify_tie): every quadruple of them with roots
+// has the same line and polynomial (lift_span.h), so the roots of the heaviest basis are every vertex
+// among them. O(k) conflict tests for each root in the box.
+template <class Kernel>
+void Box_refinement<Kernel>::decide_line_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
+  const std::size_t k = stack_.size() - first, leaf_start = out.size();
+  ++counts_.leaves;
+  counts_.leaf_candidates += k;
+  const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
+  const Site_index* leaf = stack_.data() + first;
+  const std::array<Site_index, 4> basis = line_basis_;
+  for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)).vertices) {
+    if (!Kernel::in_box(v, box, closed_above)) continue;
+    tie_.assign(basis.begin(), basis.end());
+    bool closer = false;
+    for (std::size_t o = 0; o < k && !closer; ++o) {
+      if (std::find(basis.begin(), basis.end(), leaf[o]) != basis.end()) continue;
+      const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
+      closer = sign == Sign::NEGATIVE;
+      if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
+    }
+    if (closer) continue;
+    std::sort(tie_.begin(), tie_.end());
+    append_unique<Kernel>(out, leaf_start, {tie_, v});
+  }
 }
 
 // Every candidate ties at v = tie_point_, so every quadruple of them with a discrete set of roots has v as

@@ -12,9 +12,11 @@
 // Degenerate input (five or more sites tangent to one sphere, lattices, balls on a circle) can keep more
 // candidates in arbitrarily small boxes; such a box becomes a leaf once refining stops helping. No vertex is
 // dropped: every leaf is decided exactly. A stagnant box of more than a dozen candidates is settled only if
-// they tie along a curve (their lifts span a plane: no vertex) or at one point (a tie-point leaf).
+// they tie along a curve (their lifts span a plane: no vertex; or with their power lifts a 3-space: every
+// tie on one line) or at one point (a tie-point leaf).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "diagram/cancellation.h"
@@ -57,10 +59,13 @@ class Box_refinement {
   void keep_undominated(const Axis_box& box, std::size_t first, std::size_t end);
   bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
-  // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), or, if
-  // at_point_too, all of them tie at one point, which tie_point_ then holds.
-  enum class Tie { none, vertex_free, at_point };
+  // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), their
+  // lifts and power lifts a 3-space (`on_one_line`: every tie among them lies on one line, the heaviest
+  // basis's, which line_basis_ then holds), or, if at_point_too, all of them tie at one point, which
+  // tie_point_ then holds.
+  enum class Tie { none, vertex_free, on_one_line, at_point };
   Tie classify_tie(std::size_t first, bool at_point_too);
+  void decide_line_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
   void decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
 
   const std::vector<Site>& sites_;
@@ -75,6 +80,7 @@ class Box_refinement {
   // The last point found by classify_tie, with every site known to tie there (ascending).
   std::vector<Vertex> tie_point_;  // empty or one
   std::vector<Site_index> tied_at_point_;
+  std::array<Site_index, 4> line_basis_{};
   Tie_point_star<Kernel> star_;
   std::vector<std::array<Site_index, 4>> near_quadruples_;
 };
