@@ -90,6 +90,22 @@ TEST_CASE("regression: far_field_enumerated_quadruples_of_circle_mixed_55_270") 
   CHECK(statistics.far_field_quadruples < 2000);
 }
 
+// Balls on one circle with three weights (the 1,000-seed run's circle-mixed, seed 579): the heaviest tie
+// along the circle's axis, and boxes beside the axis halved down to about 0.25 (1.6 million boxes, 1 s).
+// A tiny box whose candidates' lifts span a plane, or with their power lifts a 3-space (every tie on one
+// line), is now settled at once (box_refinement.cpp): 126,708 boxes.
+TEST_CASE("regression: octree_axis_boxes_circle_mixed_50_579") {
+  const Octree_statistics statistics = check_octree_equals_brute_force("octree_axis_boxes_circle_mixed_50_579.balls");
+  CHECK(statistics.boxes < 300000);
+}
+
+// 49 equal balls on one circle (and two others): 1.8 million boxes beside the axis where the 49 tie, each
+// waiting for its count to stop dropping before its lifts were found to span a plane; now 56,264.
+TEST_CASE("regression: octree_axis_boxes_circle_51_506") {
+  const Octree_statistics statistics = check_octree_equals_brute_force("octree_axis_boxes_circle_51_506.balls");
+  CHECK(statistics.boxes < 200000);
+}
+
 // Too large for the brute force (C(300, 4) quadruples): every vertex is validated exactly against every
 // site, and Voronota finds the same 870 (bench/README.md, certify on Ext_I_Congruent_300).
 TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {
