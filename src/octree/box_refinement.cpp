@@ -49,6 +49,8 @@ constexpr int kStagnationToClassify = 1;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 2200;
+// A root number that no root has (keep_roots_in_box skips none).
+constexpr std::size_t kNoRoot = static_cast<std::size_t>(-1);
 
 // The children of a box: its axes at least half as long as the longest are halved. None if some such axis
 // has no double strictly inside it.
@@ -309,23 +311,18 @@ typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::s
   return Tie::none;
 }
 
-// The candidates' lifts and power lifts span a 3-space (classify_tie): every quadruple of them with roots
-// has the same line and polynomial (lift_span.h), so the roots of the heaviest basis are every vertex
-// among them. O(k) conflict tests for each root in the box.
 template <class Kernel>
-void Box_refinement<Kernel>::decide_line_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
-  const std::size_t k = stack_.size() - first, leaf_start = out.size();
-  ++counts_.leaves;
-  counts_.leaf_candidates += k;
+void Box_refinement<Kernel>::keep_roots_in_box(const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots,
+                                               std::size_t skip, const Axis_box& box, const Site_index* leaf,
+                                               std::size_t k, std::size_t leaf_start, std::vector<Found_vertex>& out) {
   const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
-  const Site_index* leaf = stack_.data() + first;
-  const std::array<Site_index, 4> basis = line_basis_;
-  for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)).vertices) {
-    if (!Kernel::in_box(v, box, closed_above)) continue;
-    tie_.assign(basis.begin(), basis.end());
+  for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
+    const Vertex& v = roots.vertices[r];
+    if (r == skip || !Kernel::in_box(v, box, closed_above)) continue;
+    tie_.assign(quadruple.begin(), quadruple.end());
     bool closer = false;
     for (std::size_t o = 0; o < k && !closer; ++o) {
-      if (std::find(basis.begin(), basis.end(), leaf[o]) != basis.end()) continue;
+      if (std::find(quadruple.begin(), quadruple.end(), leaf[o]) != quadruple.end()) continue;
       const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
       closer = sign == Sign::NEGATIVE;
       if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
@@ -334,6 +331,19 @@ void Box_refinement<Kernel>::decide_line_leaf(const Axis_box& box, std::size_t f
     std::sort(tie_.begin(), tie_.end());
     append_unique<Kernel>(out, leaf_start, {tie_, v});
   }
+}
+
+// The candidates' lifts and power lifts span a 3-space (classify_tie): every quadruple of them with roots
+// has the same line and polynomial (lift_span.h), so the roots of the heaviest basis are every vertex
+// among them. O(k) conflict tests for each root in the box.
+template <class Kernel>
+void Box_refinement<Kernel>::decide_line_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
+  const std::size_t k = stack_.size() - first, leaf_start = out.size();
+  ++counts_.leaves;
+  counts_.leaf_candidates += k;
+  const std::array<Site_index, 4> basis = line_basis_;
+  keep_roots_in_box(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)), kNoRoot, box,
+                    stack_.data() + first, k, leaf_start, out);
 }
 
 // Every candidate ties at v = tie_point_, so every quadruple of them with a discrete set of roots has v as
@@ -359,22 +369,7 @@ void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::siz
   if (Kernel::in_box(tie_point, box, closed_above)) append_unique<Kernel>(out, leaf_start, {std::vector<Site_index>(leaf, leaf + k), tie_point});
 
   const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
-    const std::size_t known = root_equal_to<Kernel>(tie_point, roots);
-    for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
-      const Vertex& v = roots.vertices[r];
-      if (r == known || !Kernel::in_box(v, box, closed_above)) continue;
-      tie_.assign(quadruple.begin(), quadruple.end());
-      bool closer = false;
-      for (std::size_t o = 0; o < k && !closer; ++o) {
-        if (std::find(quadruple.begin(), quadruple.end(), leaf[o]) != quadruple.end()) continue;
-        const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
-        closer = sign == Sign::NEGATIVE;
-        if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
-      }
-      if (closer) continue;
-      std::sort(tie_.begin(), tie_.end());
-      append_unique<Kernel>(out, leaf_start, {tie_, v});
-    }
+    keep_roots_in_box(quadruple, roots, root_equal_to<Kernel>(tie_point, roots), box, leaf, k, leaf_start, out);
   };
   if (dimension == 3) {
     decide(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)));

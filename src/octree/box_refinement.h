@@ -66,6 +66,11 @@ class Box_refinement {
   enum class Tie { none, vertex_free, on_one_line, at_point };
   Tie classify_tie(std::size_t first, bool at_point_too);
   void decide_line_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
+  // Appends each root of `quadruple` but root number `skip` that lies in the box and to which no site of
+  // leaf[0, k) is closer, with its tie set among them.
+  void keep_roots_in_box(const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots, std::size_t skip,
+                         const Axis_box& box, const Site_index* leaf, std::size_t k, std::size_t leaf_start,
+                         std::vector<Found_vertex>& out);
   void decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
 
   const std::vector<Site>& sites_;
