@@ -40,11 +40,11 @@ constexpr int kStagnationLevels = 4;
 // once (no vertex among them, whatever the box). Along a line where many such sites tie (equal balls on a
 // circle, along its axis) the boxes beside the line keep losing a candidate or two per level, so waiting
 // for the count to stop dropping refined them all the way down: 1.8 million boxes for 51 balls, now
-// 56,000. A tie at one point is tried only once the candidates did not drop from the parent's: not
-// waiting for kStagnationLevels matters along a curve of ties near a tie point, where the candidates drop
-// by one every few levels (second-order separation) and the boxes along the curve double at every level;
-// trying it earlier gave the star (tie_point_star.h) boxes it separates worse (balls tangent to one
-// sphere, 1,000 of them: 1.4 s became 41 s).
+// 56,000. A tie at one point, or on one line, is tried only once the candidates did not drop from the
+// parent's: not waiting for kStagnationLevels matters along a curve of ties near a tie point, where the
+// candidates drop by one every few levels (second-order separation) and the boxes along the curve double
+// at every level; trying a point earlier gave the star (tie_point_star.h) boxes it separates worse (balls
+// tangent to one sphere, 1,000 of them: 1.4 s became 41 s), and a line cost its exact tests (below).
 constexpr int kStagnationToClassify = 1;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
@@ -289,6 +289,10 @@ typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::s
   std::array<Site_index, 4> basis;
   const int dimension = heaviest_lift_basis<Kernel>(sites_, kept, stack_.end(), basis);
   if (dimension <= 2) return Tie::vertex_free;
+  if (!at_point_too) return Tie::none;
+  // Only on a box whose count stopped dropping: the power lifts of sites inside the span (the case that
+  // settles the box) are decided exactly, one by one, which cost more than the boxes it saved on 1,000
+  // balls of the circle family (0.7 s -> 2.1 s) when tried on every tiny box.
   if (dimension == 3) {
     const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
     if (std::none_of(kept, stack_.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); })) {
@@ -296,7 +300,6 @@ typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::s
       return Tie::on_one_line;
     }
   }
-  if (!at_point_too) return Tie::none;
   const Quadruple_vertices roots = Kernel::vertices_of_quadruple(make_quadruple(basis, sites_));
   for (const Vertex& v : roots.vertices) {
     const bool all_tie = std::all_of(kept, stack_.end(), [&](Site_index s) {

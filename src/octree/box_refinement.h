@@ -59,9 +59,9 @@ class Box_refinement {
   void keep_undominated(const Axis_box& box, std::size_t first, std::size_t end);
   bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
-  // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), their
-  // lifts and power lifts a 3-space (`on_one_line`: every tie among them lies on one line, the heaviest
-  // basis's, which line_basis_ then holds), or, if at_point_too, all of them tie at one point, which
+  // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), or, if
+  // at_point_too, their lifts and power lifts a 3-space (`on_one_line`: every tie among them lies on one
+  // line, the heaviest basis's, which line_basis_ then holds), or all of them tie at one point, which
   // tie_point_ then holds.
   enum class Tie { none, vertex_free, on_one_line, at_point };
   Tie classify_tie(std::size_t first, bool at_point_too);

@@ -92,15 +92,15 @@ TEST_CASE("regression: far_field_enumerated_quadruples_of_circle_mixed_55_270") 
 
 // Balls on one circle with three weights (the 1,000-seed run's circle-mixed, seed 579): the heaviest tie
 // along the circle's axis, and boxes beside the axis halved down to about 0.25 (1.6 million boxes, 1 s).
-// A tiny box whose candidates' lifts span a plane, or with their power lifts a 3-space (every tie on one
-// line), is now settled at once (box_refinement.cpp): 126,708 boxes.
+// A tiny box whose candidates' lifts span a plane is now settled at once, and one whose lifts and power
+// lifts span a 3-space (every tie on one line) once its count stops dropping (box_refinement.cpp): 533,428.
 TEST_CASE("regression: octree_axis_boxes_circle_mixed_50_579") {
   const Octree_statistics statistics = check_octree_equals_brute_force("octree_axis_boxes_circle_mixed_50_579.balls");
-  CHECK(statistics.boxes < 300000);
+  CHECK(statistics.boxes < 800000);
 }
 
 // 49 equal balls on one circle (and two others): 1.8 million boxes beside the axis where the 49 tie, each
-// waiting for its count to stop dropping before its lifts were found to span a plane; now 56,264.
+// waiting for its count to stop dropping before its lifts were found to span a plane; now 82,168.
 TEST_CASE("regression: octree_axis_boxes_circle_51_506") {
   const Octree_statistics statistics = check_octree_equals_brute_force("octree_axis_boxes_circle_51_506.balls");
   CHECK(statistics.boxes < 200000);
