@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Scaling of `apollonius3d vertices` on generated families (issue 21): wall time and peak memory at each
+# Scaling of `apollonius3d vertices --threads 1` on generated families (issue 21): CPU time (user + sys,
+# steadier than wall time on a shared machine) and peak memory at each
 # size, and per site as a ratio to the uniform family at the same size (the goal: at most 2).
 # Usage: bench/scaling.sh [BINARY (default build/apollonius3d)] [SIZES (default "1000 4000 10000")]
 #        [FAMILIES (default "lattice lattice-noise far-vertices sphere-tangent circle")] [TIMEOUT s (default 120)]
@@ -11,13 +12,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 run() {  # family n -> "seconds peak_MiB" or "timeout -"
   "$binary" generate "$1" --n "$2" --seed 7 -o "$work/in.balls"
-  if /usr/bin/time -f "%e %M" -o "$work/time" timeout "$limit" "$binary" vertices "$work/in.balls" > /dev/null 2>&1; then
-    awk '{printf "%s %.1f\n", $1, $2 / 1024}' "$work/time"
+  if /usr/bin/time -f "%U %S %M" -o "$work/time" timeout "$limit" "$binary" vertices "$work/in.balls" --threads 1 > /dev/null 2>&1; then
+    awk '{printf "%.2f %.1f\n", $1 + $2, $3 / 1024}' "$work/time"
   else
     echo "timeout -"
   fi
 }
-printf "| family | sites | seconds | peak MiB | time/site vs uniform | memory/site vs uniform |\n|---|--:|--:|--:|--:|--:|\n"
+printf "| family | sites | CPU s (user+sys, 1 thread) | peak MiB | time/site vs uniform | memory/site vs uniform |\n|---|--:|--:|--:|--:|--:|\n"
 for n in $sizes; do
   read -r base_seconds base_memory < <(run uniform "$n")
   printf "| uniform | %d | %s | %s | 1 | 1 |\n" "$n" "$base_seconds" "$base_memory"
