@@ -4,15 +4,15 @@
 // with D_s = v - p_s and rho_s = r + w_s > 0 (the gradient of d_s is D_s / rho_s):
 //  - the sheet's normal N = rho_b D_a - rho_a D_b is a positive multiple of grad d_a - grad d_b;
 //  - a branch's tangent tau is its trisector's forward tangent (trisector_predicates.h) times its direction;
-//  - the third site k of a branch of three tied sites is nearer than a and b on the side of
-//    M_k = rho_k D_a - rho_a D_k, a positive multiple of grad d_a - grad d_k.
+//  - another site k of a branch's tie set is nearer than a and b on the side of M_k = rho_k D_a - rho_a D_k,
+//    a positive multiple of grad d_a - grad d_k, and the face is on the side where every such k is farther.
 // Predicates:
 //  - face_turn(v, a, b, branch): POSITIVE if the face lies counterclockwise of the branch around N
-//    (-sign det(N, tau, M_k): the face is where k is farther), ZERO if that is not decided at first order
-//    or the branch has more than three tied sites;
-//  - order_on_sheet(v, a, b, branches): the branches counterclockwise around N, by tau. Two branches with
-//    one tangent direction (at most two: neither lies where the other's third site is nearer) are in
-//    second-order contact; the one whose third site lies counterclockwise of it comes second.
+//    (-sign det(N, tau, M_k) for the first k of the branch's other sites that decides it: the face is where
+//    k is farther), ZERO if none decides it at first order;
+//  - order_on_sheet(v, a, b, branches): the branches counterclockwise around N, by tau; two branches with
+//    one tangent direction by their Taylor expansions in the bisector plane (branch_expansion.h), which
+//    two distinct branches cannot share to fourth order.
 #pragma once
 
 #include <algorithm>
@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "predicates/branch_expansion.h"
 #include "predicates/curve_point.h"
 #include "predicates/field_value.h"
 #include "predicates/filtered_predicate.h"
@@ -29,7 +30,7 @@ namespace apollonius {
 struct Sheet_branch {
   const Trisector* trisector;  // the edge's curve
   int direction;               // +1: the edge leaves v forward along it, -1: backward
-  std::optional<Site> third;   // the third site, for an edge of exactly three tied sites
+  std::vector<Site> others;    // the sites of the edge's tie set other than the face's two (not empty)
 };
 
 template <class NT>
@@ -56,7 +57,7 @@ struct Sheet_fan_geometry {
     return result;
   }
 
-  Vector third_side(const Site& k) const { return scaled_difference(relative_site<NT>(k, a_).row); }
+  Vector other_side(const Site& k) const { return scaled_difference(relative_site<NT>(k, a_).row); }
 
   // The branch's tangent: tau0 = <X, e1> e2 - <X, e2> e1 (spatial part) in its trisector's frame, forward
   // on a closed curve and forward times sign(<tau0, monotone>) on an open one.
@@ -88,10 +89,13 @@ struct Face_turn_predicate {
 
   template <class NT>
   static Sign evaluate(const Vertex& v, const Site& a, const Site& b, const Sheet_branch& branch) {
-    if (!branch.third) return Sign::ZERO;
     const Sheet_fan_geometry<NT> fan(v, a, b);
-    return -sign_of_field_value(
-        determinant(fan.normal, Sheet_fan_geometry<NT>::tangent(v, branch), fan.third_side(*branch.third)));
+    const typename Sheet_fan_geometry<NT>::Vector tau = Sheet_fan_geometry<NT>::tangent(v, branch);
+    for (const Site& k : branch.others) {
+      const Sign side = sign_of_field_value(determinant(fan.normal, tau, fan.other_side(k)));
+      if (side != Sign::ZERO) return -side;
+    }
+    return Sign::ZERO;
   }
 };
 
@@ -103,6 +107,7 @@ struct Order_on_sheet_predicate {
   static std::vector<std::size_t> evaluate(const Vertex& v, const Site& a, const Site& b,
                                            const std::vector<Sheet_branch>& branches) {
     using Fan = Sheet_fan_geometry<NT>;
+    using F = Field_value<NT>;
     const Fan fan(v, a, b);
     std::vector<typename Fan::Vector> tau;
     for (const Sheet_branch& branch : branches) tau.push_back(Fan::tangent(v, branch));
@@ -113,11 +118,18 @@ struct Order_on_sheet_predicate {
       return sign_of_field_value(tau[i][0] * tau[j][0] + tau[i][1] * tau[j][1] + tau[i][2] * tau[j][2]) ==
              Sign::POSITIVE;
     };
-    // Where the third site of branch i is nearer: counterclockwise of it (+1), clockwise (-1), or not
-    // decided at first order (0).
-    const auto third_turn = [&](std::size_t i) {
-      if (!branches[i].third) return 0;
-      return static_cast<int>(sign_of_field_value(determinant(fan.normal, tau[i], fan.third_side(*branches[i].third))));
+    // Whether j lies counterclockwise of i, both leaving v along tau[i] (rare: vertices of many tied sites).
+    const auto counterclockwise_of = [&](std::size_t i, std::size_t j) {
+      const Bisector_plane_projection<NT> plane(a, b);
+      const Sign normal_side = sign_of_field_value(fan.normal[0] * F(plane.axis()[0]) +
+                                                   fan.normal[1] * F(plane.axis()[1]) + fan.normal[2] * F(plane.axis()[2]));
+      const std::array<F, 4> X = field_coordinates<NT>(field_point<NT>(v, a));
+      const std::array<F, 2> u_v = plane.project({X[0], X[1], X[2]}), t = plane.project(tau[i]);
+      const Sign above = compare_expansions(plane.expansion(branches[j].others.front(), u_v, t),
+                                            plane.expansion(branches[i].others.front(), u_v, t));
+      if (above == Sign::ZERO)
+        throw std::logic_error("order_on_sheet: two edges of a face agree to fourth order at a vertex");
+      return above * normal_side == Sign::POSITIVE;
     };
     // Half 0: the first branch's direction and the directions a positive turn from it; half 1: the rest.
     std::vector<int> halves(branches.size());
@@ -132,13 +144,7 @@ struct Order_on_sheet_predicate {
       if (i == j) return false;
       const Sign s = turn(i, j);
       if (s != Sign::ZERO) return s == Sign::POSITIVE;
-      // One tangent direction (opposite ones never share a half).
-      const int ti = third_turn(i), tj = third_turn(j);
-      if (ti != 0 && tj != 0 && ti == tj)
-        throw std::logic_error("order_on_sheet: two tangent edges of one face lie on the same side");
-      if (ti != 0) return ti < 0;
-      if (tj != 0) return tj > 0;
-      throw std::logic_error("order_on_sheet: two tangent edges of a face not decided at second order");
+      return counterclockwise_of(i, j);  // one tangent direction (opposite ones never share a half)
     });
     return order;
   }

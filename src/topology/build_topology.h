@@ -20,7 +20,7 @@ struct Topology_options {
 // The whole diagram of `sites` from its complete vertex diagram and the regions of the same octree run
 // (octree_diagram with Octree_options::regions), or from brute_force_diagram and
 // regions_for_every_site. Throws std::logic_error for what this version does not decide: at a vertex of
-// 5 or more tied sites, two tangent edges of one face not told apart at second order.
+// 5 or more tied sites, a face whose side of every edge there is undecided at first order (never seen).
 Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram, const Octree_regions& regions,
                                 const Topology_options& options = {});
 

@@ -59,11 +59,10 @@ std::vector<std::array<std::size_t, 2>> sectors_at_vertex(const std::vector<Site
     const std::array<Site_index, 3> triple{tie[0], tie[1], tie[2]};
     curves.push_back(std::make_unique<Trisector>(
         triple, std::array<Site, 3>{sites[triple[0]], sites[triple[1]], sites[triple[2]]}));
-    std::optional<Site> third;
-    if (tie.size() == 3)
-      for (Site_index s : tie)
-        if (s != pair.first && s != pair.second) third = sites[s];
-    branches.push_back({curves.back().get(), end % 2 == 0 ? +1 : -1, third});
+    std::vector<Site> others;
+    for (Site_index s : tie)
+      if (s != pair.first && s != pair.second) others.push_back(sites[s]);
+    branches.push_back({curves.back().get(), end % 2 == 0 ? +1 : -1, std::move(others)});
   }
   const Vertex& v = diagram.vertices[vertex].vertex;
   const Site &a = sites[pair.first], &b = sites[pair.second];

@@ -22,8 +22,8 @@ struct Boundary_component {
 };
 
 // Every boundary component, by pair, then by first edge. Throws std::logic_error where the half-edges of
-// a pair at a vertex cannot be paired: an odd number, or tangent edges not decided at second order (a
-// configuration this version does not decide: reported, never guessed). Checks cancellation
+// a pair at a vertex cannot be paired: an odd number, or no edge there whose face side is decided at first
+// order (a configuration this version does not decide: reported, never guessed). Checks cancellation
 // (cancellation.h) once per edge, per vertex and pair, and per 4096 half-edges linked or walked from.
 std::vector<Boundary_component> boundary_components(const std::vector<Site>& sites, const Diagram& diagram,
                                                     const std::vector<Diagram_edge>& edges,

@@ -106,23 +106,19 @@ std::vector<Site> regression_sites(const std::string& name) {
 
 TEST_CASE("edges equal the brute-force reference on every family") { check_families(false); }
 
-// Open defect (docs/history.md): on these families a few inputs stop build_topology (two tangent edges of
-// one face that second order does not order). Reported here on every run, not yet a failure of the suite.
-TEST_CASE("edges equal the brute-force reference on the tie-heavy families" * doctest::may_fail()) {
-  check_families(true);
-}
+TEST_CASE("edges equal the brute-force reference on the tie-heavy families") { check_families(true); }
 
-// The open defect's input, kept under the name of what it showed: reported as not decided (an exception,
-// exit 3 in the command), never answered with a wrong diagram. When fixed, it becomes an equality with the
-// brute force, as the two regressions below.
-TEST_CASE("open defects are reported, never answered wrongly") {
-  for (const char* name : {"topology_tangent_edges_not_decided_circle_tangent_10_5"}) {
-    CAPTURE(name);
-    const std::vector<Site> sites = regression_sites(name);
-    const Diagram diagram = brute_force_diagram(sites);
-    CHECK_THROWS_AS(validate_topology(sites, build_topology(sites, diagram, regions_for_every_site(diagram))),
-                    std::logic_error);
-  }
+// Fixed: at the vertex where all ten balls tie (coplanar balls tangent to one circle, weights 2 and -2),
+// every edge leaves perpendicular to the balls' plane, so the edges of one face there are tangent in
+// pairs: a line of six equal balls and a conic. Their order on the sheet is now decided by their Taylor
+// expansions in the bisector plane (branch_expansion.h; the third sites' sides at first order, used
+// before, decide nothing there), and a face's side of an edge of 4 or more tied sites by any of its other
+// sites (sheet_fan.h, face_turn).
+TEST_CASE("regression: topology_tangent_edges_not_decided_circle_tangent_10_5") {
+  const std::optional<std::vector<Diagram_edge>> reference =
+      check_against_reference(regression_sites("topology_tangent_edges_not_decided_circle_tangent_10_5"));
+  REQUIRE(reference);
+  CHECK(reference->size() == 5);
 }
 
 // Fixed: two hyperbola edges of one face, opening away from each other, each crossed by the level lines of
