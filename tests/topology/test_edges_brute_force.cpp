@@ -1,6 +1,7 @@
 // The whole diagram against the brute-force reference (src/reference/brute_force_edges.h) on every
 // generator family: every edge, tie set, ends and curve shape, equal; then the faces and cells, checked by
-// the Euler relation. A failure prints the family, size and seed: `apollonius3d
+// the Euler relation; and the production path (octree vertices and regions) equal to it, faces and cells
+// included. A failure prints the family, size and seed: `apollonius3d
 // generate KIND --n N --seed S` writes that input. APOLLONIUS_TOPOLOGY_SEEDS sets the seeds per family.
 #include <doctest/doctest.h>
 
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "io/read_sites.h"
+#include "octree/octree_diagram.h"
 #include "reference/brute_force_diagram.h"
 #include "reference/brute_force_edges.h"
 #include "reference/site_generators.h"
@@ -44,6 +46,37 @@ bool tie_heavy(const std::string& name) {
          name == "circle" || name == "circle-mixed";
 }
 
+// The production path (the octree's vertices, and its regions as the source of vertex-free candidates)
+// gives the same whole diagram as the brute-force vertices with every site a candidate everywhere.
+void check_octree_path(const std::vector<Site>& sites, const Diagram_topology& expected) {
+  Octree_regions regions;
+  Diagram_topology t;
+  try {
+    t = build_topology(sites, octree_diagram(sites, Octree_options{1, nullptr, Arithmetic::certified, &regions}), regions);
+  } catch (const std::logic_error& e) {
+    FAIL_CHECK("octree path: " << std::string(e.what()));
+    return;
+  }
+  REQUIRE(t.vertices.vertices.size() == expected.vertices.vertices.size());
+  for (std::size_t v = 0; v < t.vertices.vertices.size(); ++v)
+    CHECK(t.vertices.vertices[v].tie_set == expected.vertices.vertices[v].tie_set);
+  REQUIRE(t.edges.size() == expected.edges.size());
+  for (std::size_t e = 0; e < t.edges.size(); ++e) CHECK(same(t.edges[e], expected.edges[e]));
+  REQUIRE(t.faces.size() == expected.faces.size());
+  for (std::size_t f = 0; f < t.faces.size(); ++f) {
+    CHECK(t.faces[f].a == expected.faces[f].a);
+    CHECK(t.faces[f].b == expected.faces[f].b);
+    CHECK(t.faces[f].boundary == expected.faces[f].boundary);
+    CHECK(t.faces[f].bounded == expected.faces[f].bounded);
+  }
+  REQUIRE(t.cells.size() == expected.cells.size());
+  for (std::size_t c = 0; c < t.cells.size(); ++c) {
+    CHECK(t.cells[c].site == expected.cells[c].site);
+    CHECK(t.cells[c].faces == expected.cells[c].faces);
+    CHECK(t.cells[c].bounded == expected.cells[c].bounded);
+  }
+}
+
 // Builds the topology of the sites and checks it against the reference; returns the reference's edges,
 // or nothing when build_topology stopped (a failure).
 std::optional<std::vector<Diagram_edge>> check_against_reference(const std::vector<Site>& sites) {
@@ -73,6 +106,7 @@ std::optional<std::vector<Diagram_edge>> check_against_reference(const std::vect
   }
   CHECK(t.edges.size() == reference.size());
   CHECK(euler_defect(t) == 0);
+  check_octree_path(sites, t);
   return reference;
 }
 
