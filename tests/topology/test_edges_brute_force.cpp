@@ -37,7 +37,7 @@ bool same(const Diagram_edge& x, const Diagram_edge& y) {
 
 std::uint64_t seeds_per_family() {
   const char* text = std::getenv("APOLLONIUS_TOPOLOGY_SEEDS");
-  return text != nullptr ? std::strtoull(text, nullptr, 10) : 12;
+  return text != nullptr ? std::strtoull(text, nullptr, 10) : 20;
 }
 
 // The families that tie many sites at one point or along one circle (issue 21's generators).

@@ -165,7 +165,7 @@ void check_against_delaunay(const std::vector<Site>& sites, bool brute = false) 
 }  // namespace
 
 TEST_CASE("equal weights: the edges are the duals of the Delaunay facets") {
-  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 1500; ++seed) {
     CAPTURE(seed);
     const std::size_t n = 5 + seed % 40;
     CAPTURE(n);
