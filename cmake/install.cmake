@@ -1,7 +1,7 @@
 # cmake --install: the libraries of every layer but the command line, their headers under
 # include/apollonius3d/<layer>/, the apollonius3d binary, and the CMake package apollonius3d.
 include(CMakePackageConfigHelpers)
-set(apollonius3d_installed_layers predicates diagram octree topology reference measure io certify)
+set(apollonius3d_installed_layers predicates diagram octree topology reference measure mesh io certify)
 set(apollonius3d_header_folders
   predicates predicates
   src/diagram diagram
@@ -9,6 +9,7 @@ set(apollonius3d_header_folders
   src/topology topology
   src/reference reference
   src/measure measure
+  src/mesh mesh
   src/io io
   certify certify)
 

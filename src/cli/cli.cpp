@@ -9,6 +9,7 @@
 #include "cli/crosscheck_command.h"
 #include "cli/diagram_command.h"
 #include "cli/generate_command.h"
+#include "cli/mesh_command.h"
 #include "cli/vertices_command.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -51,6 +52,7 @@ int run_cli(const std::vector<std::string>& arguments, std::ostream& out, std::o
       {"generate", add_generate_command},
       {"centroidal", add_centroidal_command},
       {"contacts", add_contacts_command},
+      {"mesh", add_mesh_command},
   };
   std::vector<std::pair<CLI::App*, Command_run>> commands;
   for (const auto& [name, add] : registrations) {

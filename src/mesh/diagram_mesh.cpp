@@ -1,0 +1,590 @@
+#include "mesh/diagram_mesh.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+#include "mesh/edge_samples.h"
+#include "mesh/plane_mesher.h"
+
+namespace apollonius {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+constexpr double kPi = 3.14159265358979323846;
+
+double weighted_distance(const Point3& x, const Site& s) {
+  return distance(x, Point3{s.x, s.y, s.z}) - s.w;
+}
+
+std::pair<std::uint32_t, std::uint32_t> key_of(std::uint32_t u, std::uint32_t v) { return {std::min(u, v), std::max(u, v)}; }
+
+// An edge's samples: point ids and their parameters along its curve, in forward order.
+struct Edge_polyline {
+  std::vector<std::uint32_t> ids;
+  std::vector<double> parameters;
+};
+
+// A chord between two consecutive samples of an edge: where the box planes cut it is found on the curve.
+struct Edge_chord {
+  std::size_t edge;
+  double first, second;  // the parameters of the chord's smaller and larger id
+};
+
+struct Builder {
+  const std::vector<Site>& sites;
+  const Diagram_topology& topology;
+  Mesh_options options;
+  Axis_box box;
+  double step = 0;
+  Point3 centre{};
+  double cut_radius = 0;  // the disc of this radius about the box centre's projection covers the box's
+
+  std::vector<bool> active;
+  std::vector<Site_index> active_sites;
+  std::vector<Point3> points;
+  std::vector<std::uint8_t> walls;  // per point: bit w when it lies on wall w
+  std::vector<std::int64_t> vertex_point;
+  std::vector<Edge_polyline> polylines;  // per edge id, for the edges sampled
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Edge_chord> chords;
+  std::vector<Mesh_triangle> triangles;
+  Mesh_statistics statistics;
+
+  Builder(const std::vector<Site>& s, const Diagram_topology& t, const Mesh_options& o)
+      : sites(s), topology(t), options(o) {}
+
+  std::uint32_t add_point(const Point3& x, std::uint8_t on_walls = 0) {
+    points.push_back(x);
+    walls.push_back(on_walls);
+    return static_cast<std::uint32_t>(points.size() - 1);
+  }
+
+  std::uint32_t vertex_id(std::size_t v) {
+    if (vertex_point[v] < 0) {
+      const auto& r = topology.vertices.vertices[v].rounded;
+      vertex_point[v] = add_point({r[0], r[1], r[2]});
+    }
+    return static_cast<std::uint32_t>(vertex_point[v]);
+  }
+
+  double local_step(const Point3& x) const { return step + 0.25 * std::max(0.0, distance(x, centre) - cut_radius); }
+
+  // Whether every face through the edge sees x outside its cut disc.
+  bool far_for_edge(const std::vector<Bisector_frame>& frames, const Point3& x) const {
+    for (const Bisector_frame& f : frames) {
+      const Point2 p = f.project(x), c = f.project(centre);
+      if (std::hypot(p[0] - c[0], p[1] - c[1]) <= cut_radius * 1.05) return false;
+    }
+    return true;
+  }
+
+  void sample_edge(std::size_t e) {
+    const Diagram_edge& edge = topology.edges[e];
+    const std::array<Site_index, 3> triple{edge.tie_set[0], edge.tie_set[1], edge.tie_set[2]};
+    const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+    const Conic_curve curve(trisector);
+    std::vector<Bisector_frame> frames;
+    for (std::size_t i = 0; i < edge.tie_set.size(); ++i)
+      for (std::size_t j = i + 1; j < edge.tie_set.size(); ++j)
+        frames.emplace_back(sites[edge.tie_set[i]], sites[edge.tie_set[j]]);
+    const Local_step h = [this](const Point3& x) { return local_step(x); };
+    const auto far = [&](const Point3& x) { return far_for_edge(frames, x); };
+    double t0 = 0, t1 = 0;
+    if (edge.closed) {
+      t0 = 0;
+      t1 = 2 * kPi;
+    } else {
+      if (edge.start) t0 = curve.parameter(topology.vertices.vertices[*edge.start].rounded);
+      if (edge.end) t1 = curve.parameter(topology.vertices.vertices[*edge.end].rounded);
+      if (edge.start && edge.end) {
+        if (curve.closed()) {
+          t1 = t0 + std::fmod(t1 - t0 + 4 * kPi, 2 * kPi);
+          if (*edge.start == *edge.end || t1 <= t0) t1 = t0 + 2 * kPi;
+        } else if (t1 < t0) {
+          t1 = t0;
+        }
+      } else if (edge.start) {
+        t1 = walk_until(curve, t0, +1, h, far);
+      } else if (edge.end) {
+        t0 = walk_until(curve, t1, -1, h, far);
+      } else {
+        t0 = walk_until(curve, 0, -1, h, far);
+        t1 = walk_until(curve, 0, +1, h, far);
+      }
+    }
+    Edge_polyline& polyline = polylines[e];
+    // A closed curve, or a loop from a vertex back to it, needs a polygon of some area: 8 chords at least.
+    const bool round = edge.closed || (edge.start && edge.end && *edge.start == *edge.end);
+    polyline.parameters = sample_parameters(curve, t0, t1, h, round ? 8 : 1);
+    const std::size_t n = polyline.parameters.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k == 0 && edge.start)
+        polyline.ids.push_back(vertex_id(*edge.start));
+      else if (k + 1 == n && edge.end)
+        polyline.ids.push_back(vertex_id(*edge.end));
+      else if (k + 1 == n && edge.closed)
+        polyline.ids.push_back(polyline.ids.front());
+      else
+        polyline.ids.push_back(add_point(curve.position(polyline.parameters[k])));
+    }
+    statistics.edge_samples += n;
+  }
+
+  // The box pieces of the topology-sampled edges: chord -> edge.
+  void index_chords() {
+    for (std::size_t e = 0; e < polylines.size(); ++e) {
+      const Edge_polyline& p = polylines[e];
+      for (std::size_t k = 0; k + 1 < p.ids.size(); ++k) {
+        if (p.ids[k] == p.ids[k + 1]) continue;
+        const bool ordered = p.ids[k] < p.ids[k + 1];
+        chords[key_of(p.ids[k], p.ids[k + 1])] =
+            Edge_chord{e, ordered ? p.parameters[k] : p.parameters[k + 1], ordered ? p.parameters[k + 1] : p.parameters[k]};
+      }
+    }
+  }
+
+  // Whether a and b are nearer than every other active site at x (a point of their sheet).
+  bool pair_nearest(Site_index a, Site_index b, const Point3& x) const {
+    const double d = 0.5 * (weighted_distance(x, sites[a]) + weighted_distance(x, sites[b]));
+    for (Site_index s : active_sites)
+      if (s != a && s != b && weighted_distance(x, sites[s]) < d) return false;
+    return true;
+  }
+
+  Site_index nearest_site(const Point3& x) const {
+    Site_index best = active_sites.front();
+    double least = std::numeric_limits<double>::infinity();
+    for (Site_index s : active_sites) {
+      const double d = weighted_distance(x, sites[s]);
+      if (d < least) least = d, best = s;
+    }
+    return best;
+  }
+
+  struct Pair_result {
+    Site_index a, b;
+    Plane_mesh_output output;
+  };
+
+  Pair_result mesh_pair(Site_index a, Site_index b, const std::vector<std::size_t>& face_ids) const {
+    const Bisector_frame frame(sites[a], sites[b]);
+    const Point2 c = frame.project(centre);
+    Plane_mesh_input input;
+    // The cut disc, as a circumscribed polygon.
+    const int n = std::max(16, static_cast<int>(std::ceil(2 * kPi * cut_radius / step)));
+    const double radius = cut_radius * 1.05 / std::cos(kPi / n);
+    Plane_mesh_input::Polyline disc;
+    for (int k = 0; k <= n; ++k) {
+      const double angle = 2 * kPi * (k % n) / n;
+      disc.points.push_back({c[0] + radius * std::cos(angle), c[1] + radius * std::sin(angle)});
+      disc.ids.push_back(-1);
+    }
+    input.polylines.push_back(disc);
+    std::map<std::size_t, std::size_t> face_of_edge;
+    std::int64_t default_label = static_cast<std::int64_t>(face_ids.front());
+    for (std::size_t f : face_ids) {
+      if (topology.faces[f].boundary.empty()) default_label = static_cast<std::int64_t>(f);
+      for (const auto& component : topology.faces[f].boundary)
+        for (std::size_t e : component) {
+          face_of_edge[e] = f;
+          Plane_mesh_input::Polyline line;
+          for (std::uint32_t id : polylines[e].ids) {
+            line.points.push_back(frame.project(points[id]));
+            line.ids.push_back(id);
+          }
+          input.polylines.push_back(std::move(line));
+        }
+    }
+    input.inside = [&, c](const Point2& p) {
+      if (std::hypot(p[0] - c[0], p[1] - c[1]) >= cut_radius * 1.05) return false;
+      return pair_nearest(a, b, frame.lift(p));
+    };
+    input.lift = [&frame](const Point2& p) { return frame.lift(p); };
+    input.density = [&frame](const Point2& p) { return frame.area_ratio(p); };
+    input.segment_label = [&](std::int64_t u, std::int64_t v) -> std::int64_t {
+      auto it = chords.find(key_of(static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v)));
+      if (it == chords.end()) return -1;
+      auto f = face_of_edge.find(it->second.edge);
+      return f == face_of_edge.end() ? -1 : static_cast<std::int64_t>(f->second);
+    };
+    input.default_label = default_label;
+    input.step = step;
+    input.lloyd_iterations = options.lloyd_iterations;
+    return {a, b, mesh_plane_region(input)};
+  }
+
+  void orient_face_triangle(Mesh_triangle& t) const {
+    const Point3 &p = points[t.vertices[0]], &q = points[t.vertices[1]], &r = points[t.vertices[2]];
+    const Point3 u{q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v{r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const Point3 normal{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const Point3 h{(p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3, (p[2] + q[2] + r[2]) / 3};
+    const Site &a = sites[t.site_a], &b = sites[t.site_b];
+    const double da = distance(h, {a.x, a.y, a.z}), db = distance(h, {b.x, b.y, b.z});
+    double dot = 0;
+    const std::array<double, 3> ha{h[0] - a.x, h[1] - a.y, h[2] - a.z}, hb{h[0] - b.x, h[1] - b.y, h[2] - b.z};
+    for (int k = 0; k < 3; ++k) dot += normal[k] * (ha[k] / da - hb[k] / db);
+    if (dot < 0) std::swap(t.vertices[1], t.vertices[2]);
+  }
+
+  void mesh_faces() {
+    std::map<std::pair<Site_index, Site_index>, std::vector<std::size_t>> pairs;
+    std::vector<bool> selected(sites.size(), options.sites.empty());
+    for (Site_index s : options.sites) selected[s] = true;
+    for (std::size_t f = 0; f < topology.faces.size(); ++f) {
+      const Diagram_face& face = topology.faces[f];
+      if (selected[face.a] || selected[face.b]) pairs[{face.a, face.b}].push_back(f);
+    }
+    auto start = Clock::now();
+    for (const auto& [pair, faces] : pairs)
+      for (std::size_t f : faces)
+        for (const auto& component : topology.faces[f].boundary)
+          for (std::size_t e : component)
+            if (polylines[e].ids.empty()) sample_edge(e);
+    index_chords();
+    statistics.sampling_seconds = seconds_since(start);
+    start = Clock::now();
+    std::vector<std::pair<std::pair<Site_index, Site_index>, const std::vector<std::size_t>*>> work;
+    for (const auto& [pair, faces] : pairs) work.push_back({pair, &faces});
+    std::vector<Pair_result> results(work.size());
+    tbb::task_arena arena(std::max(1, options.threads));
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t(0), work.size(), [&](std::size_t k) {
+        results[k] = mesh_pair(work[k].first.first, work[k].first.second, *work[k].second);
+      });
+    });
+    for (const Pair_result& r : results) {
+      const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+      for (const Point3& x : r.output.new_points) add_point(x);
+      for (std::size_t k = 0; k < r.output.triangles.size(); ++k) {
+        Mesh_triangle t;
+        for (int i = 0; i < 3; ++i) {
+          const std::int64_t id = r.output.triangles[k][i];
+          t.vertices[i] = id >= 0 ? static_cast<std::uint32_t>(id) : base + static_cast<std::uint32_t>(-1 - id);
+        }
+        t.site_a = static_cast<std::int32_t>(r.a);
+        t.site_b = static_cast<std::int32_t>(r.b);
+        t.face_id = r.output.labels[k];
+        orient_face_triangle(t);
+        triangles.push_back(t);
+      }
+      if (!r.output.triangles.empty()) ++statistics.faces_meshed;
+      statistics.lloyd_iterations += r.output.lloyd_iterations;
+    }
+    statistics.faces_seconds = seconds_since(start);
+  }
+
+  // ---- The cut by the box's planes --------------------------------------------------------------------
+
+  static int axis_of(int wall) { return wall / 2; }
+  double bound_of(int wall) const { return wall % 2 ? box.hi[wall / 2] : box.lo[wall / 2]; }
+  // Positive outside the wall's half-space.
+  double outside(const Point3& x, int wall) const {
+    return wall % 2 ? x[wall / 2] - box.hi[wall / 2] : box.lo[wall / 2] - x[wall / 2];
+  }
+
+  std::map<std::tuple<std::uint32_t, std::uint32_t, int>, std::uint32_t> crossings;
+
+  // The point where the mesh edge (u, v), one side of the wall's plane each, crosses it: on the edge's
+  // curve, on the sheet's curve in another wall, or on the sheet along the chord's projection.
+  std::uint32_t crossing(std::uint32_t u, std::uint32_t v, int wall, Site_index a, Site_index b) {
+    const auto key = std::make_tuple(std::min(u, v), std::max(u, v), wall);
+    if (auto it = crossings.find(key); it != crossings.end()) return it->second;
+    const int k = axis_of(wall);
+    const double bound = bound_of(wall);
+    Point3 x;
+    std::uint8_t on = static_cast<std::uint8_t>(1u << wall);
+    auto chord = chords.find(key_of(u, v));
+    const std::uint8_t common = walls[u] & walls[v];
+    if (chord != chords.end()) {
+      const Edge_chord c = chord->second;
+      const Diagram_edge& edge = topology.edges[c.edge];
+      const std::array<Site_index, 3> triple{edge.tie_set[0], edge.tie_set[1], edge.tie_set[2]};
+      const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+      const Conic_curve curve(trisector);
+      double lo = c.first, hi = c.second;
+      const bool lo_outside = outside(points[std::min(u, v)], wall) > 0;
+      for (int i = 0; i < 200 && lo != hi; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi) break;
+        ((outside(curve.position(mid), wall) > 0) == lo_outside ? lo : hi) = mid;
+      }
+      const double t = 0.5 * (lo + hi);
+      x = curve.position(t);
+      x[k] = bound;
+      const std::uint32_t id = add_point(x, on);
+      crossings[key] = id;
+      const bool first_is_min = true;
+      (void)first_is_min;
+      chords[key_of(std::min(u, v), id)] = std::min(u, v) < id ? Edge_chord{c.edge, c.first, t} : Edge_chord{c.edge, t, c.first};
+      chords[key_of(std::max(u, v), id)] = std::max(u, v) < id ? Edge_chord{c.edge, c.second, t} : Edge_chord{c.edge, t, c.second};
+      return id;
+    }
+    const Bisector_frame frame(sites[a], sites[b]);
+    const Point2 pu = frame.project(points[u]), pv = frame.project(points[v]);
+    // Along the chord's projection: the crossing of the sheet with the plane.
+    double lo = 0, hi = 1;
+    const bool u_outside = outside(points[u], wall) > 0;
+    auto at = [&](double l) { return frame.lift({pu[0] + l * (pv[0] - pu[0]), pu[1] + l * (pv[1] - pu[1])}); };
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid == lo || mid == hi) break;
+      ((outside(at(mid), wall) > 0) == u_outside ? lo : hi) = mid;
+    }
+    Point2 p{pu[0] + 0.5 * (lo + hi) * (pv[0] - pu[0]), pu[1] + 0.5 * (lo + hi) * (pv[1] - pu[1])};
+    int other = -1;
+    for (int w = 0; w < 6; ++w)
+      if ((common >> w) & 1u) other = w;
+    if (other >= 0) {
+      // Both ends on another wall: Newton in the plane for the point of the sheet on both walls.
+      const int k2 = axis_of(other);
+      const double bound2 = bound_of(other);
+      const double scale = std::max(1.0, std::hypot(p[0], p[1]));
+      for (int i = 0; i < 30; ++i) {
+        const Point3 y = frame.lift(p);
+        const double f1 = y[k] - bound, f2 = y[k2] - bound2;
+        if (std::abs(f1) + std::abs(f2) <= 1e-15 * scale) break;
+        const double d = 1e-7 * scale;
+        const Point3 ys = frame.lift({p[0] + d, p[1]}), yt = frame.lift({p[0], p[1] + d});
+        const double j11 = (ys[k] - y[k]) / d, j12 = (yt[k] - y[k]) / d, j21 = (ys[k2] - y[k2]) / d, j22 = (yt[k2] - y[k2]) / d;
+        const double det = j11 * j22 - j12 * j21;
+        if (det == 0) break;
+        p = {p[0] - (j22 * f1 - j12 * f2) / det, p[1] - (-j21 * f1 + j11 * f2) / det};
+      }
+      x = frame.lift(p);
+      x[k2] = bound2;
+      on = static_cast<std::uint8_t>(on | (1u << other));
+    } else {
+      x = frame.lift(p);
+    }
+    x[k] = bound;
+    const std::uint32_t id = add_point(x, on);
+    crossings[key] = id;
+    return id;
+  }
+
+  void cut_by_wall(int wall) {
+    std::vector<Mesh_triangle> kept;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (outside(points[i], wall) == 0) walls[i] = static_cast<std::uint8_t>(walls[i] | (1u << wall));
+    for (const Mesh_triangle& t : triangles) {
+      std::array<double, 3> s;
+      for (int k = 0; k < 3; ++k) s[k] = outside(points[t.vertices[k]], wall);
+      if (s[0] <= 0 && s[1] <= 0 && s[2] <= 0) {
+        kept.push_back(t);
+        continue;
+      }
+      if (s[0] >= 0 && s[1] >= 0 && s[2] >= 0) continue;
+      std::vector<std::uint32_t> polygon;
+      for (int k = 0; k < 3; ++k) {
+        const int m = (k + 1) % 3;
+        if (s[k] <= 0) polygon.push_back(t.vertices[k]);
+        if ((s[k] < 0 && s[m] > 0) || (s[k] > 0 && s[m] < 0))
+          polygon.push_back(crossing(t.vertices[k], t.vertices[m], wall, static_cast<Site_index>(t.site_a),
+                                     static_cast<Site_index>(t.site_b)));
+      }
+      for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+        Mesh_triangle piece = t;
+        piece.vertices = {polygon[0], polygon[k], polygon[k + 1]};
+        if (piece.vertices[0] == piece.vertices[1] || piece.vertices[1] == piece.vertices[2] ||
+            piece.vertices[0] == piece.vertices[2])
+          continue;
+        kept.push_back(piece);
+      }
+    }
+    triangles = std::move(kept);
+  }
+
+  // ---- The walls -----------------------------------------------------------------------------------
+
+  std::array<std::uint32_t, 8> corners{};
+
+  Point3 corner_point(int mask) const {
+    return {mask & 1 ? box.hi[0] : box.lo[0], mask & 2 ? box.hi[1] : box.lo[1], mask & 4 ? box.hi[2] : box.lo[2]};
+  }
+
+  void make_corners() {
+    for (int mask = 0; mask < 8; ++mask) {
+      std::uint8_t on = 0;
+      for (int k = 0; k < 3; ++k) on = static_cast<std::uint8_t>(on | (1u << (2 * k + ((mask >> k) & 1))));
+      corners[mask] = add_point(corner_point(mask), on);
+    }
+  }
+
+  void mesh_walls_of_cell(Site_index cell) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (const Mesh_triangle& t : triangles) {
+      if (t.is_wall() || (t.site_a != static_cast<std::int32_t>(cell) && t.site_b != static_cast<std::int32_t>(cell))) continue;
+      for (int k = 0; k < 3; ++k) ++uses[key_of(t.vertices[k], t.vertices[(k + 1) % 3])];
+    }
+    std::array<std::vector<std::pair<std::uint32_t, std::uint32_t>>, 6> rims;
+    std::vector<std::uint32_t> rim_points;
+    for (const auto& [edge, count] : uses) {
+      if (count != 1) continue;
+      const std::uint8_t common = walls[edge.first] & walls[edge.second];
+      int wall = -1;
+      for (int w = 0; w < 6 && wall < 0; ++w)
+        if ((common >> w) & 1u) wall = w;
+      if (wall < 0) {
+        ++statistics.open_rims;
+        continue;
+      }
+      rims[wall].push_back(edge);
+      rim_points.push_back(edge.first);
+      rim_points.push_back(edge.second);
+    }
+    std::sort(rim_points.begin(), rim_points.end());
+    rim_points.erase(std::unique(rim_points.begin(), rim_points.end()), rim_points.end());
+    for (int wall = 0; wall < 6; ++wall) {
+      const int k = axis_of(wall), k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      const double bound = bound_of(wall);
+      auto embed = [&](const Point2& p) {
+        Point3 x;
+        x[k] = bound;
+        x[k1] = p[0];
+        x[k2] = p[1];
+        return x;
+      };
+      if (rims[wall].empty()) {
+        const Point2 middle{(box.lo[k1] + box.hi[k1]) / 2, (box.lo[k2] + box.hi[k2]) / 2};
+        if (nearest_site(embed(middle)) != cell) continue;
+      }
+      Plane_mesh_input input;
+      for (const auto& [u, v] : rims[wall]) {
+        Plane_mesh_input::Polyline line;
+        for (std::uint32_t id : {u, v}) {
+          line.points.push_back({points[id][k1], points[id][k2]});
+          line.ids.push_back(id);
+        }
+        input.polylines.push_back(std::move(line));
+      }
+      // The wall's four sides, through the rims' points on them.
+      for (int side = 0; side < 4; ++side) {
+        const int fixed_axis = side < 2 ? k1 : k2, free_axis = side < 2 ? k2 : k1;
+        const int other_wall = 2 * fixed_axis + (side % 2);
+        std::vector<std::uint32_t> on_side;
+        for (int mask = 0; mask < 8; ++mask) {
+          const std::uint32_t id = corners[mask];
+          if (((walls[id] >> wall) & 1u) && ((walls[id] >> other_wall) & 1u)) on_side.push_back(id);
+        }
+        for (std::uint32_t id : rim_points)
+          if (((walls[id] >> wall) & 1u) && ((walls[id] >> other_wall) & 1u)) on_side.push_back(id);
+        std::sort(on_side.begin(), on_side.end(),
+                  [&](std::uint32_t x, std::uint32_t y) { return points[x][free_axis] < points[y][free_axis]; });
+        Plane_mesh_input::Polyline line;
+        for (std::uint32_t id : on_side) {
+          line.points.push_back({points[id][k1], points[id][k2]});
+          line.ids.push_back(id);
+        }
+        input.polylines.push_back(std::move(line));
+      }
+      input.inside = [&](const Point2& p) { return nearest_site(embed(p)) == cell; };
+      input.lift = embed;
+      input.density = [](const Point2&) { return 1.0; };
+      input.segment_label = [](std::int64_t, std::int64_t) -> std::int64_t { return -1; };
+      input.default_label = -1;
+      input.step = step;
+      input.lloyd_iterations = options.lloyd_iterations;
+      const Plane_mesh_output output = mesh_plane_region(input);
+      const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+      for (const Point3& x : output.new_points) add_point(x, static_cast<std::uint8_t>(1u << wall));
+      // Counterclockwise in (k1, k2) has its normal along +e_k; the outer normal is +e_k on a high wall.
+      for (const auto& tri : output.triangles) {
+        Mesh_triangle t;
+        for (int i = 0; i < 3; ++i)
+          t.vertices[i] = tri[i] >= 0 ? static_cast<std::uint32_t>(tri[i]) : base + static_cast<std::uint32_t>(-1 - tri[i]);
+        if (wall % 2 == 0) std::swap(t.vertices[1], t.vertices[2]);
+        t.site_a = -1 - wall;
+        t.site_b = static_cast<std::int32_t>(cell);
+        t.face_id = -1;
+        triangles.push_back(t);
+      }
+    }
+  }
+
+  Diagram_mesh run() {
+    if (!(step > 0) || !std::isfinite(step)) throw std::invalid_argument("mesh: the step must be positive and finite");
+    for (int k = 0; k < 3; ++k)
+      if (!(box.lo[k] < box.hi[k])) throw std::invalid_argument("mesh: the box has no volume");
+    active.assign(sites.size(), true);
+    for (const Hidden_site& h : topology.vertices.hidden) active[h.site] = false;
+    for (Site_index s = 0; s < sites.size(); ++s)
+      if (active[s]) active_sites.push_back(s);
+    if (active_sites.empty()) return {};
+    for (int k = 0; k < 3; ++k) centre[k] = (box.lo[k] + box.hi[k]) / 2;
+    cut_radius = distance(Point3{box.lo[0], box.lo[1], box.lo[2]}, Point3{box.hi[0], box.hi[1], box.hi[2]}) / 2 + 2 * step;
+    vertex_point.assign(topology.vertices.vertices.size(), -1);
+    polylines.assign(topology.edges.size(), {});
+    mesh_faces();
+    const auto start = Clock::now();
+    for (int wall = 0; wall < 6; ++wall) cut_by_wall(wall);
+    make_corners();
+    std::vector<Site_index> cells = options.sites;
+    if (cells.empty())
+      for (const Diagram_cell& c : topology.cells) cells.push_back(c.site);
+    for (Site_index cell : cells)
+      if (active[cell]) mesh_walls_of_cell(cell);
+    statistics.cut_seconds = seconds_since(start);
+    // Keep the points in use, in order.
+    std::vector<std::int64_t> renumber(points.size(), -1);
+    Diagram_mesh mesh;
+    for (Mesh_triangle& t : triangles)
+      for (std::uint32_t& v : t.vertices) {
+        if (renumber[v] < 0) {
+          renumber[v] = static_cast<std::int64_t>(mesh.points.size());
+          mesh.points.push_back(points[v]);
+        }
+        v = static_cast<std::uint32_t>(renumber[v]);
+      }
+    mesh.triangles = std::move(triangles);
+    mesh.box = box;
+    mesh.step = step;
+    mesh.statistics = statistics;
+    return mesh;
+  }
+};
+
+}  // namespace
+
+Axis_box default_mesh_box(const std::vector<Site>& sites, const Diagram& diagram) {
+  std::vector<bool> hidden(sites.size(), false);
+  for (const Hidden_site& h : diagram.hidden) hidden[h.site] = true;
+  Axis_box box{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                std::numeric_limits<double>::infinity()},
+               {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                -std::numeric_limits<double>::infinity()}};
+  double grow = 0;
+  for (Site_index s = 0; s < sites.size(); ++s) {
+    if (hidden[s]) continue;
+    const std::array<double, 3> x{sites[s].x, sites[s].y, sites[s].z};
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], x[k]), box.hi[k] = std::max(box.hi[k], x[k]);
+    grow = std::max(grow, sites[s].w);
+  }
+  if (!(box.lo[0] <= box.hi[0])) return Axis_box{{-1, -1, -1}, {1, 1, 1}};
+  double extent = 0;
+  for (int k = 0; k < 3; ++k) box.lo[k] -= grow, box.hi[k] += grow, extent = std::max(extent, box.hi[k] - box.lo[k]);
+  if (extent == 0) extent = 2;
+  for (int k = 0; k < 3; ++k)
+    if (box.hi[k] - box.lo[k] == 0) box.lo[k] -= extent / 2, box.hi[k] += extent / 2;
+  return box;
+}
+
+Diagram_mesh mesh_diagram(const std::vector<Site>& sites, const Diagram_topology& topology, const Mesh_options& options) {
+  Builder builder(sites, topology, options);
+  builder.box = options.has_box ? options.box : default_mesh_box(sites, topology.vertices);
+  const double diagonal = distance(Point3{builder.box.lo[0], builder.box.lo[1], builder.box.lo[2]},
+                                   Point3{builder.box.hi[0], builder.box.hi[1], builder.box.hi[2]});
+  builder.step = options.step > 0 ? options.step : 0.02 * diagonal;
+  if (options.step < 0 || !std::isfinite(options.step)) builder.step = options.step;
+  return builder.run();
+}
+
+}  // namespace apollonius

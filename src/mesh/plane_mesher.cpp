@@ -1,0 +1,201 @@
+#include "mesh/plane_mesher.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_2/Lloyd_move_2.h>
+#include <CGAL/Mesh_2/Mesh_global_optimizer_2.h>
+#include <CGAL/Mesh_2/Face_badness.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace apollonius {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+struct Vertex_info {
+  std::int64_t id = -1;  // -1: not an existing mesh point
+};
+using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<Vertex_info, Kernel, CGAL::Delaunay_mesh_vertex_base_2<Kernel>>;
+using Face_base = CGAL::Delaunay_mesh_face_base_2<Kernel>;
+using Data_structure = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
+using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Data_structure, CGAL::Exact_intersections_tag>;
+using Face_handle = Triangulation::Face_handle;
+using Point = Kernel::Point_2;
+
+Point2 to_point2(const Point& p) { return {p.x(), p.y()}; }
+
+double squared_length(const Point3& a, const Point3& b) {
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+// Delaunay refinement criteria measured on the lifted triangle: its longest edge at most the step, and the
+// sine of its least angle at least sqrt(0.125) (20.7 degrees), as CGAL's Delaunay_mesh_size_criteria_2.
+class Lifted_criteria {
+ public:
+  using Quality = std::pair<double, double>;  // squared least sine, squared longest edge / step^2
+
+  Lifted_criteria(const Plane_mesh_input& input) : input_(&input) {}
+
+  class Is_bad {
+   public:
+    explicit Is_bad(const Plane_mesh_input* input) : input_(input) {}
+    CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
+      if (q.second > 1) return CGAL::Mesh_2::IMPERATIVELY_BAD;
+      return q.first < kSquaredSineBound ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
+    }
+    CGAL::Mesh_2::Face_badness operator()(const Face_handle& f, Quality& q) const {
+      std::array<Point3, 3> x;
+      for (int k = 0; k < 3; ++k) x[k] = input_->lift(to_point2(f->vertex(k)->point()));
+      std::array<double, 3> l{squared_length(x[1], x[2]), squared_length(x[2], x[0]), squared_length(x[0], x[1])};
+      std::sort(l.begin(), l.end());
+      const Point3 u{x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]};
+      const Point3 v{x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
+      const Point3 c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const double twice_area_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+      q.first = l[1] * l[2] > 0 ? twice_area_squared / (l[1] * l[2]) : 0;
+      q.second = l[2] / (input_->step * input_->step * input_->size_factor * input_->size_factor);
+      return operator()(q);
+    }
+
+   private:
+    static constexpr double kSquaredSineBound = 0.125;
+    const Plane_mesh_input* input_;
+  };
+
+  Is_bad is_bad_object() const { return Is_bad(input_); }
+
+ private:
+  const Plane_mesh_input* input_;
+};
+
+// The Lloyd density, through Lloyd_move_2's sizing field: density 1 / s^4 (CGAL's convention, d = 2).
+thread_local const std::function<double(const Point2&)>* current_density = nullptr;
+struct Density_sizing {
+  static const bool is_vertex_update_needed = false;
+  explicit Density_sizing(Triangulation&) {}
+  double operator()(const Point& p) const { return std::pow((*current_density)(to_point2(p)), -0.25); }
+};
+
+// Regions: the classes of finite faces joined across unconstrained edges.
+std::vector<std::vector<Face_handle>> regions_of(const Triangulation& cdt) {
+  std::map<Face_handle, int> region;
+  std::vector<std::vector<Face_handle>> out;
+  for (Face_handle f : cdt.finite_face_handles()) {
+    if (region.count(f)) continue;
+    const int r = static_cast<int>(out.size());
+    out.emplace_back();
+    std::vector<Face_handle> stack{f};
+    region[f] = r;
+    while (!stack.empty()) {
+      Face_handle g = stack.back();
+      stack.pop_back();
+      out[r].push_back(g);
+      for (int i = 0; i < 3; ++i) {
+        Face_handle h = g->neighbor(i);
+        if (cdt.is_infinite(h) || cdt.is_constrained({g, i}) || region.count(h)) continue;
+        region[h] = r;
+        stack.push_back(h);
+      }
+    }
+  }
+  return out;
+}
+
+Point centroid(const Face_handle& f) {
+  return CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+}
+
+double area(const Face_handle& f) {
+  return std::abs(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+}
+
+}  // namespace
+
+Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
+  Triangulation cdt;
+  for (const Plane_mesh_input::Polyline& polyline : input.polylines) {
+    std::vector<Triangulation::Vertex_handle> handles;
+    for (std::size_t k = 0; k < polyline.points.size(); ++k) {
+      auto v = cdt.insert(Point(polyline.points[k][0], polyline.points[k][1]));
+      if (polyline.ids[k] >= 0) v->info().id = polyline.ids[k];
+      handles.push_back(v);
+    }
+    for (std::size_t k = 0; k + 1 < handles.size(); ++k)
+      if (handles[k] != handles[k + 1]) cdt.insert_constraint(handles[k], handles[k + 1]);
+  }
+  Plane_mesh_output output;
+  if (cdt.dimension() < 2) return output;
+
+  // Which regions to mesh: decided at the centroid of each region's largest triangle. The others become
+  // seeds, which CGAL marks as outside the domain.
+  std::vector<Point> seeds;
+  bool any_inside = false;
+  for (const std::vector<Face_handle>& region : regions_of(cdt)) {
+    Face_handle largest = region.front();
+    for (Face_handle f : region)
+      if (area(f) > area(largest)) largest = f;
+    const Point c = centroid(largest);
+    if (input.inside(to_point2(c)))
+      any_inside = true;
+    else
+      seeds.push_back(c);
+  }
+  if (!any_inside) return output;
+
+  Lifted_criteria criteria(input);
+  CGAL::Delaunay_mesher_no_edge_refinement_2<Triangulation, Lifted_criteria> mesher(cdt, criteria);
+  mesher.set_seeds(seeds.begin(), seeds.end(), false);
+  mesher.refine_mesh();
+
+  if (input.lloyd_iterations > 0) {
+    current_density = &input.density;
+    using Move = CGAL::Mesh_2::Lloyd_move_2<Triangulation, Density_sizing>;
+    CGAL::Mesh_2::Mesh_global_optimizer_2<Triangulation, Move> lloyd(cdt, input.lloyd_convergence, input.lloyd_freeze);
+    lloyd.set_seeds(seeds.begin(), seeds.end(), false);
+    lloyd(input.lloyd_iterations);
+    current_density = nullptr;
+    output.lloyd_iterations = static_cast<std::size_t>(input.lloyd_iterations);
+  }
+
+  // Labels: from a constraint around each region whose two points tell one.
+  for (const std::vector<Face_handle>& region : regions_of(cdt)) {
+    if (!region.front()->is_in_domain()) continue;
+    std::int64_t label = -1;
+    for (Face_handle f : region) {
+      for (int i = 0; i < 3 && label < 0; ++i) {
+        if (!cdt.is_constrained({f, i})) continue;
+        const std::int64_t u = f->vertex(Triangulation::cw(i))->info().id, v = f->vertex(Triangulation::ccw(i))->info().id;
+        if (u >= 0 && v >= 0) label = input.segment_label(u, v);
+      }
+      if (label >= 0) break;
+    }
+    if (label < 0) label = input.default_label;
+    for (Face_handle f : region) {
+      std::array<std::int64_t, 3> t;
+      for (int k = 0; k < 3; ++k) {
+        auto v = f->vertex(k);
+        if (v->info().id == -1) {
+          output.new_points.push_back(input.lift(to_point2(v->point())));
+          v->info().id = -1 - static_cast<std::int64_t>(output.new_points.size());  // -2 - k for new point k
+        }
+        t[k] = v->info().id;
+      }
+      output.triangles.push_back(t);
+      output.labels.push_back(label);
+    }
+  }
+  // New point k was tagged -2 - k while filling (-1 meant "none yet"); it is -1 - k in the output.
+  for (auto& t : output.triangles)
+    for (auto& id : t)
+      if (id < 0) id += 1;
+  return output;
+}
+
+}  // namespace apollonius

@@ -1,0 +1,232 @@
+// The meshes of faces and cells (src/mesh) against what a correct mesh must satisfy, on random inputs and
+// on the vdrc sets (holes, closed edges, a vertex-free cell, three edges between two vertices):
+//  - every cell's mesh (its faces' triangles and its pieces of the box's walls) is closed and consistently
+//    oriented: each directed edge once, its reverse once; CGAL finds no self-intersection in it;
+//  - every face vertex lies on its pair's bisector (|d_a - d_b| <= 1e-12 of the input's scale) and no
+//    other site is nearer there by more than that; every wall vertex lies on its wall;
+//  - the cells' volumes sum to the box's volume (the walls tile it; rounding only), and each cell's volume
+//    is its Monte Carlo volume (nearest site of uniform points, independent of everything in src/) within
+//    five standard deviations plus the discretisation error of chords of step h on curved sheets, bounded
+//    here by 0.05 h times the cell's surface area. (measure_cells, the exact-geometry cubature, disagrees
+//    with both on some inputs: docs/benchmarks.md, "Meshes".)
+#include <doctest/doctest.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "io/read_sites.h"
+#include "mesh/diagram_mesh.h"
+#include "mesh/edge_samples.h"
+#include "mesh/mesh_quality.h"
+#include "octree/octree_diagram.h"
+#include "topology/build_topology.h"
+
+using namespace apollonius;
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
+
+Diagram_topology topology_of(const std::vector<Site>& sites) {
+  Octree_regions regions;
+  Diagram vertices = octree_diagram(sites, Octree_options{1, nullptr, Arithmetic::certified, &regions});
+  return build_topology(sites, std::move(vertices), regions);
+}
+
+double box_volume(const Axis_box& b) { return (b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]); }
+
+// The cell's triangles, oriented outward.
+std::vector<std::array<std::uint32_t, 3>> cell_triangles(const Diagram_mesh& mesh, Site_index cell) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  const auto c = static_cast<std::int32_t>(cell);
+  for (const Mesh_triangle& t : mesh.triangles) {
+    if (t.site_a == c || (t.is_wall() && t.site_b == c))
+      out.push_back(t.vertices);
+    else if (!t.is_wall() && t.site_b == c)
+      out.push_back({t.vertices[0], t.vertices[2], t.vertices[1]});
+  }
+  return out;
+}
+
+struct Cell_check {
+  bool closed = true;  // every directed edge once and its reverse once
+  double volume = 0, area = 0;
+};
+
+Cell_check check_cell(const Diagram_mesh& mesh, const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  Cell_check check;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  for (const auto& [edge, count] : directed) {
+    auto reverse = directed.find({edge.second, edge.first});
+    if (count != 1 || reverse == directed.end() || reverse->second != 1) check.closed = false;
+  }
+  const Point3 o = mesh.points[triangles.front()[0]];
+  for (const auto& t : triangles) {
+    const Point3 &p = mesh.points[t[0]], &q = mesh.points[t[1]], &r = mesh.points[t[2]];
+    const Point3 u{p[0] - o[0], p[1] - o[1], p[2] - o[2]}, v{q[0] - o[0], q[1] - o[1], q[2] - o[2]},
+        w{r[0] - o[0], r[1] - o[1], r[2] - o[2]};
+    check.volume += (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+    const Point3 a{q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b{r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const Point3 n{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    check.area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  }
+  return check;
+}
+
+bool self_intersects(const Diagram_mesh& mesh, const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  std::map<std::uint32_t, std::size_t> local;
+  std::vector<Kernel::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const auto& t : triangles) {
+    std::vector<std::size_t> polygon;
+    for (std::uint32_t v : t) {
+      auto [it, fresh] = local.emplace(v, points.size());
+      if (fresh) points.emplace_back(mesh.points[v][0], mesh.points[v][1], mesh.points[v][2]);
+      polygon.push_back(it->second);
+    }
+    polygons.push_back(polygon);
+  }
+  Surface surface;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, surface);
+  return CGAL::Polygon_mesh_processing::does_self_intersect(surface);
+}
+
+double weighted_distance(const Point3& x, const Site& s) { return distance(x, {s.x, s.y, s.z}) - s.w; }
+
+// Checks every property of the header on one input; returns the largest relative volume error.
+void check_mesh(const std::vector<Site>& sites, const Diagram_mesh& mesh, const Diagram_topology& topology,
+                const std::string& name, bool compare_volumes = true) {
+  CAPTURE(name);
+  REQUIRE(!mesh.triangles.empty());
+  CHECK(mesh.statistics.open_rims == 0);
+  double scale = 0;
+  for (const Site& s : sites) scale = std::max({scale, std::abs(s.x), std::abs(s.y), std::abs(s.z), std::abs(s.w)});
+  std::vector<bool> hidden(sites.size(), false);
+  for (const Hidden_site& h : topology.vertices.hidden) hidden[h.site] = true;
+  std::size_t off_bisector = 0, nearer = 0, off_wall = 0;
+  for (const Mesh_triangle& t : mesh.triangles)
+    for (std::uint32_t v : t.vertices) {
+      const Point3& x = mesh.points[v];
+      if (t.is_wall()) {
+        const int wall = -1 - t.site_a;
+        if (x[wall / 2] != (wall % 2 ? mesh.box.hi[wall / 2] : mesh.box.lo[wall / 2])) ++off_wall;
+        continue;
+      }
+      const double da = weighted_distance(x, sites[t.site_a]), db = weighted_distance(x, sites[t.site_b]);
+      if (std::abs(da - db) > 1e-12 * scale) ++off_bisector;
+      for (Site_index s = 0; s < sites.size(); ++s)
+        if (!hidden[s] && weighted_distance(x, sites[s]) < std::min(da, db) - 1e-12 * scale) {
+          ++nearer;
+          break;
+        }
+    }
+  CHECK(off_bisector == 0);
+  CHECK(nearer == 0);
+  CHECK(off_wall == 0);
+  // Monte Carlo volumes: the nearest site of uniform points of the box.
+  std::vector<double> hits(sites.size(), 0);
+  const int samples = compare_volumes ? 200000 : 0;
+  std::mt19937_64 random(12345);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < samples; ++k) {
+    Point3 x;
+    for (int a = 0; a < 3; ++a) x[a] = mesh.box.lo[a] + (mesh.box.hi[a] - mesh.box.lo[a]) * unit(random);
+    Site_index best = topology.cells.front().site;
+    for (const Diagram_cell& c : topology.cells)
+      if (weighted_distance(x, sites[c.site]) < weighted_distance(x, sites[best])) best = c.site;
+    hits[best] += 1;
+  }
+  double total = 0;
+  for (const Diagram_cell& cell : topology.cells) {
+    CAPTURE(cell.site);
+    const auto triangles = cell_triangles(mesh, cell.site);
+    const double fraction = samples ? hits[cell.site] / samples : 0;
+    const double sigma = samples ? box_volume(mesh.box) * std::sqrt(fraction * (1 - fraction) / samples) : 0;
+    if (triangles.empty()) {
+      if (compare_volumes) CHECK(fraction * box_volume(mesh.box) <= 5 * sigma + 1e-9);
+      continue;
+    }
+    const Cell_check c = check_cell(mesh, triangles);
+    CHECK(c.closed);
+    CHECK(!self_intersects(mesh, triangles));
+    total += c.volume;
+    if (compare_volumes)
+      CHECK(std::abs(c.volume - fraction * box_volume(mesh.box)) <= 5 * sigma + 0.05 * mesh.step * c.area);
+  }
+  CHECK(std::abs(total - box_volume(mesh.box)) <= 1e-9 * box_volume(mesh.box));
+}
+
+std::vector<Site> random_sites(std::uint64_t seed, std::size_t n, double weight_spread) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Site> sites;
+  for (std::size_t k = 0; k < n; ++k) sites.push_back({unit(random), unit(random), unit(random), weight_spread * unit(random)});
+  return sites;
+}
+
+}  // namespace
+
+TEST_CASE("random weighted sites: every cell closed, on its bisectors, volumes as the exact geometry's") {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const std::size_t n = 4 + seed % 9;
+    const double spread = seed % 3 == 0 ? 0 : 0.25;
+    const std::vector<Site> sites = random_sites(seed, n, spread);
+    const Diagram_topology topology = topology_of(sites);
+    Mesh_options options;
+    options.step = 0.08;
+    options.lloyd_iterations = 5;
+    const Diagram_mesh mesh = mesh_diagram(sites, topology, options);
+    check_mesh(sites, mesh, topology, "random seed " + std::to_string(seed) + " n " + std::to_string(n));
+  }
+}
+
+
+TEST_CASE("vdrc sets: holes, closed edges, a vertex-free cell, three edges between two vertices") {
+  for (const char* name : {"ANO3_3CONNECT", "ANO1_0CONNECT", "Vis_II_5", "Vis_III_5"}) {
+    const Site_input input = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", Read_options{});
+    const Diagram_topology topology = topology_of(input.sites);
+    Mesh_options options;
+    options.lloyd_iterations = 5;
+    const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+    check_mesh(input.sites, mesh, topology, name);
+  }
+}
+
+TEST_CASE("--sites: only the chosen cells, each closed") {
+  const std::vector<Site> sites = random_sites(21, 10, 0.25);
+  const Diagram_topology topology = topology_of(sites);
+  Mesh_options options;
+  options.step = 0.08;
+  options.lloyd_iterations = 3;
+  options.sites = {2, 5};
+  const Diagram_mesh mesh = mesh_diagram(sites, topology, options);
+  for (const Mesh_triangle& t : mesh.triangles)
+    CHECK((t.site_a == 2 || t.site_a == 5 || t.site_b == 2 || t.site_b == 5));
+  for (Site_index cell : options.sites) {
+    const auto triangles = cell_triangles(mesh, cell);
+    REQUIRE(!triangles.empty());
+    CHECK(check_cell(mesh, triangles).closed);
+    CHECK(!self_intersects(mesh, triangles));
+  }
+}
+
+TEST_CASE("quality measures: 1 for an equilateral triangle, lower otherwise") {
+  const Triangle_quality q = triangle_quality({0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0});
+  for (double v : q.values) CHECK(v == doctest::Approx(1).epsilon(1e-12));
+  const Triangle_quality r = triangle_quality({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  CHECK(r.values[0] == doctest::Approx(0.75));                          // 3 (pi / 4) / pi
+  CHECK(r.values[1] == doctest::Approx(1 / std::sqrt(2.0)));
+  CHECK(r.values[2] == doctest::Approx(4 * std::sqrt(3.0) * 0.5 / 4));  // S = 1/2, sum l^2 = 4
+  const double inradius = 1 / (2 + std::sqrt(2.0)), circumradius = std::sqrt(2.0) / 2;
+  CHECK(r.values[3] == doctest::Approx(2 * inradius / circumradius));
+  CHECK(r.values[4] == doctest::Approx(2 * std::sqrt(3.0) * inradius));
+}
