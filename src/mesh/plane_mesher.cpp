@@ -3,6 +3,8 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Lloyd_move_2.h>
@@ -153,6 +155,23 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
   CGAL::Delaunay_mesher_no_edge_refinement_2<Triangulation, Lifted_criteria> mesher(cdt, criteria);
   mesher.set_seeds(seeds.begin(), seeds.end(), false);
   mesher.refine_mesh();
+
+  // A region with no vertex of its own would lie flat on its boundary's chords (two faces on one closed
+  // edge would then coincide): it gets its largest triangle's centroid.
+  bool inserted = false;
+  for (const std::vector<Face_handle>& region : regions_of(cdt)) {
+    if (!region.front()->is_in_domain()) continue;
+    bool own_vertex = false;
+    Face_handle largest = region.front();
+    for (Face_handle f : region) {
+      for (int k = 0; k < 3 && !own_vertex; ++k) own_vertex = !cdt.are_there_incident_constraints(f->vertex(k));
+      if (area(f) > area(largest)) largest = f;
+    }
+    if (own_vertex) continue;
+    cdt.insert(centroid(largest), largest);
+    inserted = true;
+  }
+  if (inserted) CGAL::Delaunay_mesher_2<Triangulation, CGAL::Delaunay_mesh_size_criteria_2<Triangulation>>::mark_facets(cdt, seeds.begin(), seeds.end(), false);
 
   if (input.lloyd_iterations > 0) {
     current_density = &input.density;
