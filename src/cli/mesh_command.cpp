@@ -25,6 +25,7 @@ struct Mesh_command {
   std::vector<long long> sites;
   int lloyd = 20;
   bool quality = false, ascii = false, stats = false;
+  CLI::Option* step_option = nullptr;
   Diagram_options diagram;
 };
 
@@ -36,7 +37,8 @@ int run(const Mesh_command& command, std::ostream& out, std::ostream& err) {
   const bool obj = ends_with(command.output, ".obj");
   if (!obj && !ends_with(command.output, ".ply")) throw Usage_error("-o must name a .ply or .obj file, not '" + command.output + "'");
   if (command.ascii && obj) throw Usage_error("--ascii is for PLY output (OBJ is text)");
-  if (command.step < 0) throw Usage_error("--step must be a number > 0, not " + round_trip(command.step));
+  if (command.step_option->count() > 0 && !(command.step > 0))
+    throw Usage_error("--step must be a number > 0, not " + round_trip(command.step));
   Mesh_options options;
   options.step = command.step;
   options.threads = command.diagram.threads;
@@ -105,7 +107,7 @@ Command_run add_mesh_command(CLI::App& app) {
       "edge share its samples. PLY (binary unless --ascii) or OBJ by OUT's extension. APPROXIMATE coordinates.");
   sub->add_option("INPUT", command->input, "the sites, as for 'vertices' (- for standard input)")->required();
   sub->add_option("-o,--output", command->output, "OUT.ply or OUT.obj, written atomically")->required()->type_name("OUT");
-  sub->add_option("--step", command->step, "the sampling step (default: 2% of the box's diagonal)")
+  command->step_option = sub->add_option("--step", command->step, "the sampling step (default: 2% of the box's diagonal)")
       ->check(finite_number)
       ->type_name("S");
   sub->add_option("--box", command->box,
