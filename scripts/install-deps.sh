@@ -9,6 +9,7 @@ packages=(
   doctest-dev gemmi-dev tao-pegtl-dev zlib1g-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   voronota time
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel
+  python3-matplotlib
 )
 if [ "${1:-}" = "--fuzz" ]; then packages+=(clang libclang-rt-dev); fi
 missing=()
