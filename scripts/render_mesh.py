@@ -15,7 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
 
 
 def read_ply(path):
@@ -78,6 +78,12 @@ def main(argv):
     parser.add_argument("--walls", action="store_true", help="draw the box walls too")
     parser.add_argument("--elev", type=float, default=25, help="view elevation, degrees")
     parser.add_argument("--azim", type=float, default=-60, help="view azimuth, degrees")
+    parser.add_argument("--explode", type=float, default=0,
+                        help="draws each cell apart, moved away from the centre by this fraction of its offset")
+    parser.add_argument("--edges", action="store_true",
+                        help="draws the diagram's edges: where two triangles of different faces meet")
+    parser.add_argument("--colour", choices=["cell", "face"], default="cell",
+                        help="one colour per cell (default), or per face (pair of sites)")
     parser.add_argument("--title", default=None)
     args = parser.parse_args(argv)
 
@@ -90,14 +96,43 @@ def main(argv):
         in_a, in_b = np.isin(site_a, chosen), np.isin(site_b, chosen)
         keep &= in_a | in_b
         owner = np.where(in_a, site_a, site_b)
-    triangles, owner = triangles[keep], owner[keep]
-    if len(triangles) == 0:
+    lines = []
+    if args.edges:
+        pair = {}
+        for t, a, b in zip(triangles[keep], site_a[keep], site_b[keep]):
+            for k in range(3):
+                edge = (min(t[k], t[(k + 1) % 3]), max(t[k], t[(k + 1) % 3]))
+                pair.setdefault(edge, set()).add((a, b))
+        lines = [points[list(e)] for e, pairs in pair.items() if len(pairs) > 1]
+    if args.explode > 0:
+        # Every cell on its own (a face shared by two cells drawn for each), moved apart.
+        cells = args.cells if args.cells is not None else sorted(set(site_a[site_a >= 0]) | set(site_b))
+        pieces, owners = [], []
+        for c in cells:
+            mine = keep & ((site_a == c) | (site_b == c))
+            pieces.append(points[triangles[mine]])
+            owners.append(np.full(int(mine.sum()), c))
+        centres = [p.reshape(-1, 3).mean(axis=0) for p in pieces if len(p)]
+        middle = np.mean(centres, axis=0) if centres else np.zeros(3)
+        for k, p in enumerate(pieces):
+            if len(p):
+                pieces[k] = p + args.explode * (p.reshape(-1, 3).mean(axis=0) - middle)
+        corners, owner = np.concatenate(pieces), np.concatenate(owners)
+    else:
+        corners, owner = points[triangles[keep]], owner[keep]
+    if len(corners) == 0:
         raise SystemExit("render_mesh: no triangle to draw")
 
-    corners = points[triangles]
     cells = np.unique(owner)
     palette = plt.get_cmap("tab20")
-    colour_of = {c: np.array(palette(k % 20)[:3]) for k, c in enumerate(cells)}
+    if args.colour == "face":
+        # Faces are told apart by their pair; owner then carries the pair's index.
+        kept = keep if args.explode == 0 else None
+        if kept is None:
+            raise SystemExit("render_mesh: --colour face draws the faces once: not with --explode")
+        pairs = site_a[kept].astype(np.int64) * (1 << 32) + site_b[kept].astype(np.int64)
+        owner = np.unique(pairs, return_inverse=True)[1]
+    colour_of = {c: np.array(palette(k % 20)[:3]) for k, c in enumerate(np.unique(owner))}
     colours = np.array([colour_of[c] for c in owner])
     elev, azim = np.radians(args.elev), np.radians(args.azim)
     view = np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
@@ -111,18 +146,20 @@ def main(argv):
     figure = plt.figure(figsize=(width / 100, height / 100), dpi=100)
     axes = figure.add_subplot(projection="3d")
     axes.add_collection3d(Poly3DCollection(corners, facecolors=colours, edgecolors=(0, 0, 0, 0.25), linewidths=0.1))
+    if lines and args.explode == 0:
+        axes.add_collection3d(Line3DCollection(lines, colors="black", linewidths=1.2))
     low, high = corners.reshape(-1, 3).min(axis=0), corners.reshape(-1, 3).max(axis=0)
     middle, half = (low + high) / 2, (high - low).max() / 2
     for setter, m in zip((axes.set_xlim, axes.set_ylim, axes.set_zlim), middle):
         setter(m - half, m + half)
-    axes.set_box_aspect((1, 1, 1))
+    axes.set_box_aspect((1, 1, 1), zoom=1.15)
     axes.view_init(elev=args.elev, azim=args.azim)
     axes.set_axis_off()
     if args.title:
         axes.set_title(args.title)
     figure.subplots_adjust(left=0, right=1, bottom=0, top=1)
     figure.savefig(args.output, dpi=100)
-    print(f"render_mesh: {len(triangles)} triangles of {len(cells)} cells -> {args.output}")
+    print(f"render_mesh: {len(corners)} triangles of {len(cells)} cells -> {args.output}")
 
 
 if __name__ == "__main__":
