@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <tuple>
 
@@ -53,6 +54,8 @@ struct Builder {
   std::vector<Site_index> active_sites;
   std::vector<Point3> points;
   std::vector<std::uint8_t> walls;  // per point: bit w when it lies on wall w
+  std::vector<std::uint8_t> kinds;  // per point: 0 a sample or a point made by meshing or cutting a face,
+                                    // 1 a diagram vertex, 2 where a wall cuts an edge
   std::vector<std::int64_t> vertex_point;
   std::vector<Edge_polyline> polylines;  // per edge id, for the edges sampled
   std::map<std::pair<std::uint32_t, std::uint32_t>, Edge_chord> chords;
@@ -65,6 +68,7 @@ struct Builder {
   std::uint32_t add_point(const Point3& x, std::uint8_t on_walls = 0) {
     points.push_back(x);
     walls.push_back(on_walls);
+    kinds.push_back(0);
     return static_cast<std::uint32_t>(points.size() - 1);
   }
 
@@ -72,6 +76,7 @@ struct Builder {
     if (vertex_point[v] < 0) {
       const auto& r = topology.vertices.vertices[v].rounded;
       vertex_point[v] = add_point({r[0], r[1], r[2]});
+      kinds.back() = 1;
     }
     return static_cast<std::uint32_t>(vertex_point[v]);
   }
@@ -321,9 +326,8 @@ struct Builder {
       x = curve.position(t);
       x[k] = bound;
       const std::uint32_t id = add_point(x, on);
+      kinds[id] = 2;
       crossings[key] = id;
-      const bool first_is_min = true;
-      (void)first_is_min;
       chords[key_of(std::min(u, v), id)] = std::min(u, v) < id ? Edge_chord{c.edge, c.first, t} : Edge_chord{c.edge, t, c.first};
       chords[key_of(std::max(u, v), id)] = std::max(u, v) < id ? Edge_chord{c.edge, c.second, t} : Edge_chord{c.edge, t, c.second};
       return id;
@@ -401,6 +405,250 @@ struct Builder {
       }
     }
     triangles = std::move(kept);
+  }
+
+  // ---- Faces cut by the box, meshed again inside it ------------------------------------------------
+  // The cut leaves slivers along the walls. A cut face is meshed again from its new boundary: its edges'
+  // pieces as they are (shared with the other faces on them), and its rims on the walls resampled at the
+  // step between the points it shares (edge crossings, the box's edges). An edge sample closer than 0.4
+  // step to a crossing is dropped by every face on the edge alike.
+
+  // The point of the sheet on the wall nearest p (Gauss-Newton in the plane).
+  Point3 onto_wall(const Bisector_frame& frame, Point2 p, int wall) const {
+    const int k = axis_of(wall);
+    const double bound = bound_of(wall);
+    const double scale = std::max({1.0, std::abs(bound), std::hypot(p[0], p[1])});
+    for (int i = 0; i < 40; ++i) {
+      const Point3 y = frame.lift(p);
+      const double g = y[k] - bound;
+      if (std::abs(g) <= 1e-15 * scale) break;
+      const double d = 1e-7 * scale;
+      const double gs = (frame.lift({p[0] + d, p[1]})[k] - y[k]) / d, gt = (frame.lift({p[0], p[1] + d})[k] - y[k]) / d;
+      const double norm = gs * gs + gt * gt;
+      if (norm == 0) break;
+      p = {p[0] - g * gs / norm, p[1] - g * gt / norm};
+    }
+    Point3 x = frame.lift(p);
+    x[k] = bound;
+    return x;
+  }
+
+  static int lowest_wall(std::uint8_t bits) {
+    for (int w = 0; w < 6; ++w)
+      if ((bits >> w) & 1u) return w;
+    return -1;
+  }
+
+  std::vector<char> dropped_points() const {
+    std::vector<char> dropped(points.size(), 0);
+    for (const auto& [key, chord] : chords) {
+      const auto [u, v] = key;
+      if (u >= points.size() || v >= points.size()) continue;
+      const bool u_cut = kinds[u] == 2, v_cut = kinds[v] == 2;
+      if (u_cut == v_cut) continue;
+      const std::uint32_t plain = u_cut ? v : u, cut = u_cut ? u : v;
+      if (kinds[plain] == 0 && walls[plain] == 0 && distance(points[plain], points[cut]) < 0.4 * step) dropped[plain] = 1;
+    }
+    return dropped;
+  }
+
+  // Meshes the pair's cut face again; false (and nothing changed) when its boundary is not as expected.
+  bool remesh_pair(Site_index a, Site_index b, const std::vector<std::size_t>& mine, const std::vector<char>& dropped,
+                   std::vector<Mesh_triangle>& added) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::int64_t> label_of_edge;
+    for (std::size_t i : mine)
+      for (int k = 0; k < 3; ++k) {
+        const auto e = key_of(triangles[i].vertices[k], triangles[i].vertices[(k + 1) % 3]);
+        ++uses[e];
+        label_of_edge[e] = triangles[i].face_id;
+      }
+    std::map<std::uint32_t, std::vector<std::uint32_t>> around;  // boundary adjacency
+    for (const auto& [e, n] : uses) {
+      if (n != 1) continue;
+      around[e.first].push_back(e.second);
+      around[e.second].push_back(e.first);
+    }
+    // Merge through dropped samples.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::int64_t> fixed;  // edge pieces -> face label
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> rims;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::int64_t> rim_label;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (const auto& [e, n] : uses) {
+      if (n != 1 || seen.count(e)) continue;
+      seen.insert(e);
+      if (chords.count(e)) {
+        std::uint32_t u = e.first, v = e.second;
+        // Extend across dropped points on either side.
+        for (std::uint32_t* end : {&u, &v}) {
+          std::uint32_t from = *end == u ? v : u;
+          while (dropped[*end] && around[*end].size() == 2) {
+            const std::uint32_t next = around[*end][0] == from ? around[*end][1] : around[*end][0];
+            seen.insert(key_of(*end, next));
+            from = *end;
+            *end = next;
+          }
+        }
+        if (u == v) return false;
+        const auto merged = key_of(u, v);
+        if (!chords.count(merged)) chords[merged] = chords[e];
+        fixed[merged] = label_of_edge[e];
+        continue;
+      }
+      if (lowest_wall(walls[e.first] & walls[e.second]) < 0) return false;
+      rims.push_back(e);
+      rim_label[e] = label_of_edge[e];
+    }
+    // Rim chains between shared points.
+    std::map<std::uint32_t, std::vector<std::uint32_t>> rim_around;
+    for (const auto& [u, v] : rims) rim_around[u].push_back(v), rim_around[v].push_back(u);
+    std::set<std::uint32_t> fixed_points;
+    for (const auto& [e, l] : fixed) fixed_points.insert(e.first), fixed_points.insert(e.second);
+    auto is_break = [&](std::uint32_t p) {
+      const std::uint8_t w = walls[p];
+      return rim_around[p].size() != 2 || kinds[p] != 0 || fixed_points.count(p) || (w & (w - 1)) != 0;
+    };
+    const Bisector_frame frame(sites[a], sites[b]);
+    Plane_mesh_input input;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> walked;
+    std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> chain_label;
+    auto walk = [&](std::uint32_t start, std::uint32_t next) {
+      std::vector<std::uint32_t> chain{start};
+      std::uint32_t from = start, at = next;
+      walked.insert(key_of(start, next));
+      while (true) {
+        chain.push_back(at);
+        if (at == start || is_break(at)) break;
+        const std::uint32_t after = rim_around[at][0] == from ? rim_around[at][1] : rim_around[at][0];
+        walked.insert(key_of(at, after));
+        from = at;
+        at = after;
+      }
+      const int wall = lowest_wall(walls[chain[0]] & walls[chain[1]]);
+      const std::int64_t label = rim_label[key_of(chain[0], chain[1])];
+      double length = 0;
+      std::vector<double> at_length{0};
+      for (std::size_t k = 1; k < chain.size(); ++k)
+        at_length.push_back(length += distance(points[chain[k - 1]], points[chain[k]]));
+      const bool loop = chain.front() == chain.back();
+      const std::size_t n = std::max<std::size_t>(loop ? 3 : 1, static_cast<std::size_t>(std::lround(length / step)));
+      Plane_mesh_input::Polyline line;
+      std::vector<std::uint32_t> ids{chain.front()};
+      std::size_t segment = 0;
+      for (std::size_t i = 1; i < n; ++i) {
+        const double target = length * static_cast<double>(i) / static_cast<double>(n);
+        while (at_length[segment + 1] < target) ++segment;
+        const double f = (target - at_length[segment]) / (at_length[segment + 1] - at_length[segment]);
+        const Point3 &p = points[chain[segment]], &q = points[chain[segment + 1]];
+        const Point3 x{p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]), p[2] + f * (q[2] - p[2])};
+        const std::uint32_t id = add_point(onto_wall(frame, frame.project(x), wall), static_cast<std::uint8_t>(1u << wall));
+        ids.push_back(id);
+      }
+      ids.push_back(chain.back());
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        line.points.push_back(frame.project(points[ids[i]]));
+        line.ids.push_back(ids[i]);
+        if (i > 0) chain_label[{std::min(ids[i - 1], ids[i]), std::max(ids[i - 1], ids[i])}] = label;
+      }
+      input.polylines.push_back(std::move(line));
+    };
+    for (const auto& [p, list] : rim_around)
+      if (is_break(p))
+        for (std::uint32_t q : list)
+          if (!walked.count(key_of(p, q))) walk(p, q);
+    for (const auto& [u, v] : rims)
+      if (!walked.count(key_of(u, v))) walk(u, v);  // closed rims with no shared point
+    for (const auto& [e, label] : fixed) {
+      Plane_mesh_input::Polyline line;
+      for (std::uint32_t id : {e.first, e.second}) {
+        line.points.push_back(frame.project(points[id]));
+        line.ids.push_back(id);
+      }
+      input.polylines.push_back(std::move(line));
+    }
+    input.inside = [&](const Point2& p) {
+      const Point3 x = frame.lift(p);
+      for (int k = 0; k < 3; ++k)
+        if (!(x[k] > box.lo[k] && x[k] < box.hi[k])) return false;
+      return pair_nearest(a, b, x);
+    };
+    input.lift = [&frame](const Point2& p) { return frame.lift(p); };
+    input.density = [&frame](const Point2& p) { return frame.area_ratio(p); };
+    input.segment_label = [&](std::int64_t u, std::int64_t v) -> std::int64_t {
+      const auto key = std::make_pair(std::min(u, v), std::max(u, v));
+      if (auto it = fixed.find({static_cast<std::uint32_t>(key.first), static_cast<std::uint32_t>(key.second)}); it != fixed.end())
+        return it->second;
+      auto it = chain_label.find(key);
+      return it == chain_label.end() ? -1 : it->second;
+    };
+    input.default_label = triangles[mine.front()].face_id;
+    input.step = step;
+    input.lloyd_iterations = options.lloyd_iterations;
+    const Plane_mesh_output output = mesh_plane_region(input);
+    if (output.triangles.empty()) return false;
+    // The new mesh's boundary must be exactly the constraints given (else a region was misjudged).
+    std::map<std::pair<std::int64_t, std::int64_t>, int> new_uses;
+    for (const auto& t : output.triangles)
+      for (int k = 0; k < 3; ++k) ++new_uses[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+    std::set<std::pair<std::int64_t, std::int64_t>> boundary, expected;
+    for (const auto& [e, n] : new_uses)
+      if (n == 1) boundary.insert(e);
+    for (const Plane_mesh_input::Polyline& line : input.polylines)
+      for (std::size_t k = 0; k + 1 < line.ids.size(); ++k)
+        expected.insert({std::min(line.ids[k], line.ids[k + 1]), std::max(line.ids[k], line.ids[k + 1])});
+    if (boundary != expected) return false;
+    const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+    for (const Point3& x : output.new_points) add_point(x);
+    for (std::size_t k = 0; k < output.triangles.size(); ++k) {
+      Mesh_triangle t;
+      for (int i = 0; i < 3; ++i) {
+        const std::int64_t id = output.triangles[k][i];
+        t.vertices[i] = id >= 0 ? static_cast<std::uint32_t>(id) : base + static_cast<std::uint32_t>(-1 - id);
+      }
+      t.site_a = static_cast<std::int32_t>(a);
+      t.site_b = static_cast<std::int32_t>(b);
+      t.face_id = output.labels[k];
+      orient_face_triangle(t);
+      added.push_back(t);
+    }
+    return true;
+  }
+
+  void remesh_cut_faces() {
+    std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::size_t>> by_pair;
+    for (std::size_t i = 0; i < triangles.size(); ++i) by_pair[{triangles[i].site_a, triangles[i].site_b}].push_back(i);
+    // Samples are dropped near crossings only if every cut face can be meshed again with them dropped:
+    // the faces on one edge must agree. Otherwise none is, and a face that still fails keeps its cut mesh.
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      const std::vector<char> dropped = attempt == 0 ? dropped_points() : std::vector<char>(points.size(), 0);
+      const std::size_t point_count = points.size();
+      std::vector<char> replaced(triangles.size(), 0);
+      std::vector<Mesh_triangle> added;
+      std::size_t failed = 0;
+      for (const auto& [pair, mine] : by_pair) {
+        bool cut = false;
+        for (std::size_t i : mine)
+          for (std::uint32_t v : triangles[i].vertices) cut = cut || walls[v] != 0;
+        if (!cut) continue;
+        if (remesh_pair(static_cast<Site_index>(pair.first), static_cast<Site_index>(pair.second), mine, dropped, added))
+          for (std::size_t i : mine) replaced[i] = 1;
+        else
+          ++failed;
+      }
+      if (failed > 0 && attempt == 0) {
+        points.resize(point_count);
+        walls.resize(point_count);
+        kinds.resize(point_count);
+        continue;
+      }
+      statistics.faces_not_remeshed = failed;
+      std::vector<Mesh_triangle> kept;
+      for (std::size_t i = 0; i < triangles.size(); ++i)
+        if (!replaced[i]) kept.push_back(triangles[i]);
+      kept.insert(kept.end(), added.begin(), added.end());
+      triangles = std::move(kept);
+      return;
+    }
   }
 
   // ---- The walls -----------------------------------------------------------------------------------
@@ -526,6 +774,7 @@ struct Builder {
     mesh_faces();
     const auto start = Clock::now();
     for (int wall = 0; wall < 6; ++wall) cut_by_wall(wall);
+    if (options.remesh_cut_faces) remesh_cut_faces();
     make_corners();
     std::vector<Site_index> cells = options.sites;
     if (cells.empty())

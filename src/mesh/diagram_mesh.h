@@ -32,6 +32,7 @@ struct Mesh_triangle {
 struct Mesh_statistics {
   std::size_t faces_meshed = 0, edge_samples = 0, lloyd_iterations = 0;
   std::size_t open_rims = 0;  // cut edges of a cell found on no wall (0 when every cell mesh closed)
+  std::size_t faces_not_remeshed = 0;  // cut faces whose boundary did not allow meshing them again
   double sampling_seconds = 0, faces_seconds = 0, cut_seconds = 0;
 };
 
@@ -49,6 +50,7 @@ struct Mesh_options {
   Axis_box box{};
   std::vector<Site_index> sites;     // the cells to mesh (ascending); empty: every cell
   int lloyd_iterations = 20;
+  bool remesh_cut_faces = true;  // cut faces meshed again from their new boundary (no slivers at walls)
   int threads = 1;
 };
 
