@@ -758,6 +758,21 @@ struct Builder {
     }
   }
 
+  // Whether each cell's triangles use every edge twice.
+  bool every_cell_closed(const std::vector<Site_index>& cells) const {
+    std::map<std::int32_t, std::map<std::pair<std::uint32_t, std::uint32_t>, int>> uses;
+    std::vector<bool> wanted(sites.size(), false);
+    for (Site_index c : cells) wanted[c] = true;
+    for (const Mesh_triangle& t : triangles)
+      for (std::int32_t c : {t.site_a, t.site_b})
+        if (c >= 0 && wanted[static_cast<std::size_t>(c)])
+          for (int k = 0; k < 3; ++k) ++uses[c][key_of(t.vertices[k], t.vertices[(k + 1) % 3])];
+    for (const auto& [cell, edges] : uses)
+      for (const auto& [edge, n] : edges)
+        if (n != 2) return false;
+    return true;
+  }
+
   Diagram_mesh run() {
     if (!(step > 0) || !std::isfinite(step)) throw std::invalid_argument("mesh: the step must be positive and finite");
     for (int k = 0; k < 3; ++k)
@@ -774,13 +789,34 @@ struct Builder {
     mesh_faces();
     const auto start = Clock::now();
     for (int wall = 0; wall < 6; ++wall) cut_by_wall(wall);
-    if (options.remesh_cut_faces) remesh_cut_faces();
     make_corners();
     std::vector<Site_index> cells = options.sites;
     if (cells.empty())
       for (const Diagram_cell& c : topology.cells) cells.push_back(c.site);
-    for (Site_index cell : cells)
-      if (active[cell]) mesh_walls_of_cell(cell);
+    auto close_cells = [&] {
+      for (Site_index cell : cells)
+        if (active[cell]) mesh_walls_of_cell(cell);
+    };
+    if (options.remesh_cut_faces) {
+      // Meshing the cut faces again is checked face by face; should a cell still come out open, the cut
+      // meshes are kept instead (statistics.remesh_abandoned).
+      const std::vector<Point3> points_before = points;
+      const std::vector<std::uint8_t> walls_before = walls, kinds_before = kinds;
+      const std::vector<Mesh_triangle> triangles_before = triangles;
+      remesh_cut_faces();
+      close_cells();
+      if (statistics.open_rims > 0 || !every_cell_closed(cells)) {
+        points = points_before;
+        walls = walls_before;
+        kinds = kinds_before;
+        triangles = triangles_before;
+        statistics.open_rims = 0;
+        statistics.remesh_abandoned = true;
+        close_cells();
+      }
+    } else {
+      close_cells();
+    }
     statistics.cut_seconds = seconds_since(start);
     // Keep the points in use, in order.
     std::vector<std::int64_t> renumber(points.size(), -1);
