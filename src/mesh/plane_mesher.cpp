@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -118,6 +119,61 @@ double area(const Face_handle& f) {
   return std::abs(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
 }
 
+
+using Marker = CGAL::Delaunay_mesher_2<Triangulation, CGAL::Delaunay_mesh_size_criteria_2<Triangulation>>;
+
+double squared_distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double length = dx * dx + dy * dy;
+  double t = length > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length : 0;
+  t = std::max(0.0, std::min(1.0, t));
+  const double ex = a[0] + t * dx - p[0], ey = a[1] + t * dy - p[1];
+  return ex * ex + ey * ey;
+}
+
+// Starts the interior from a triangular lattice of spacing `step` on the sheet (measured with the density
+// at the domain's centre), keeping the points at least 0.55 step from every constraint: the Lloyd
+// iterations then only have the layer along the boundary to settle.
+void seed_lattice(Triangulation& cdt, const Plane_mesh_input& input, const std::vector<Point>& seeds) {
+  Marker::mark_facets(cdt, seeds.begin(), seeds.end(), false);
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for (Face_handle f : cdt.finite_face_handles()) {
+    if (!f->is_in_domain()) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Point& p = f->vertex(k)->point();
+      lo[0] = std::min(lo[0], p.x()), lo[1] = std::min(lo[1], p.y());
+      hi[0] = std::max(hi[0], p.x()), hi[1] = std::max(hi[1], p.y());
+    }
+  }
+  if (!(lo[0] <= hi[0])) return;
+  const Point2 middle{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2};
+  const double spacing = input.step / std::sqrt(input.density(middle));
+  if ((hi[0] - lo[0]) * (hi[1] - lo[1]) > 4e6 * spacing * spacing) return;  // a huge domain: refinement alone
+  std::vector<std::pair<Point2, Point2>> segments;
+  for (const Plane_mesh_input::Polyline& line : input.polylines)
+    for (std::size_t k = 0; k + 1 < line.points.size(); ++k) segments.push_back({line.points[k], line.points[k + 1]});
+  const double clearance = 0.55 * spacing, row = spacing * std::sqrt(3.0) / 2;
+  std::vector<Point> lattice;
+  int parity = 0;
+  for (double y = lo[1] + row / 2; y < hi[1]; y += row, parity ^= 1) {
+    for (double x = lo[0] + (parity ? spacing / 2 : 0); x < hi[0]; x += spacing) {
+      const Point p(x, y);
+      const Face_handle f = cdt.locate(p);
+      if (f == nullptr || cdt.is_infinite(f) || !f->is_in_domain()) continue;
+      bool clear = true;
+      for (const auto& [a, b] : segments)
+        if (squared_distance_to_segment({x, y}, a, b) < clearance * clearance) {
+          clear = false;
+          break;
+        }
+      if (clear) lattice.push_back(p);
+    }
+  }
+  for (const Point& p : lattice) cdt.insert(p);
+  Marker::mark_facets(cdt, seeds.begin(), seeds.end(), false);
+}
+
 }  // namespace
 
 Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
@@ -150,6 +206,8 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
       seeds.push_back(c);
   }
   if (!any_inside) return output;
+
+  if (input.lattice) seed_lattice(cdt, input, seeds);
 
   Lifted_criteria criteria(input);
   CGAL::Delaunay_mesher_no_edge_refinement_2<Triangulation, Lifted_criteria> mesher(cdt, criteria);

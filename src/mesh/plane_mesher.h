@@ -38,6 +38,7 @@ struct Plane_mesh_input {
   double size_factor = 1.4;
   double lloyd_convergence = 0.001, lloyd_freeze = 0.001;
   int lloyd_iterations = 20;
+  bool lattice = true;  // start the interior from a triangular lattice
 };
 
 struct Plane_mesh_output {
