@@ -21,6 +21,8 @@
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/json_input.h"
+#include "io/json_output.h"
+#include "io/json_stream.h"
 #include "io/read_sites.h"
 #include "io/read_structure.h"
 #include "io/round_trip.h"
@@ -455,6 +457,133 @@ TEST_CASE("vertex writers: non-finite values and empty lists") {
   write_vertices_json(json, diagram, nullptr);
   CHECK(json.str().find("\"x\":\"inf\",\"y\":\"-inf\",\"z\":1e+300,\"r\":0.1}") != std::string::npos);
   CHECK(json.str().find("\"hidden_sites\": [],\n  \"sites_without_vertex\": []\n}") != std::string::npos);
+}
+
+namespace {
+
+// A random JSON value: numbers of every binade (finite; an infinity is the string json_number makes),
+// integers of both signs, strings with escapes, non-ASCII and invalid UTF-8, nested containers.
+Json random_json(std::mt19937_64& random, int depth) {
+  const int kind = static_cast<int>(random() % (depth > 2 ? 6 : 8));
+  switch (kind) {
+    case 0: {
+      double x;
+      do {
+        const std::uint64_t bits = random();
+        std::memcpy(&x, &bits, sizeof x);
+      } while (std::isnan(x));
+      if (random() % 3 == 0) x = static_cast<double>(static_cast<int>(random() % 2001) - 1000) / 8;
+      return json_number(x);
+    }
+    case 1: return Json(random() >> (random() % 64));
+    case 2: return Json(-static_cast<std::int64_t>(random() >> (1 + random() % 63)));
+    case 3: return Json(random() % 2 == 0);
+    case 4: return Json(nullptr);
+    case 5: {
+      const std::string alphabet = std::string("ab \"\\/\n\t\x01\x7f", 10) + "\xc3\xa9" + "\xff";
+      std::string text;
+      for (int n = static_cast<int>(random() % 6); n > 0; --n) text += alphabet[random() % alphabet.size()];
+      return Json(text);
+    }
+    case 6: {
+      Json array = Json::array();
+      for (int n = static_cast<int>(random() % 4); n > 0; --n) array.push_back(random_json(random, depth + 1));
+      return array;
+    }
+    default: {
+      Json object = Json::object();
+      for (int n = static_cast<int>(random() % 4); n > 0; --n)
+        object["k" + std::to_string(random() % 5) + (random() % 4 == 0 ? "\"\xe9" : "")] = random_json(random, depth + 1);
+      return object;
+    }
+  }
+}
+
+void stream_compact(Json_stream& out, const Json& value) {
+  switch (value.type()) {
+    case Json::value_t::array:
+      out.begin_array();
+      for (const Json& element : value) stream_compact(out, element);
+      out.end_array();
+      break;
+    case Json::value_t::object:
+      out.begin_object();
+      for (const auto& [key, member] : value.items()) {
+        out.key(key);
+        stream_compact(out, member);
+      }
+      out.end_object();
+      break;
+    case Json::value_t::number_float: out.number_or_infinity(value.get<double>()); break;
+    case Json::value_t::number_unsigned: out.unsigned_number(value.get<std::uint64_t>()); break;
+    case Json::value_t::number_integer: out.integer(value.get<std::int64_t>()); break;
+    case Json::value_t::boolean: out.boolean(value.get<bool>()); break;
+    case Json::value_t::string: out.string(value.get<std::string>()); break;
+    default: out.null();
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Json_stream writes what write_json_document prints for the same document") {
+  const std::uint64_t seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937_64 random(seed);
+  for (int trial = 0; trial < 2000; ++trial) {
+    CAPTURE(trial);
+    Json document = Json::object();
+    for (int n = static_cast<int>(random() % 5); n > 0; --n) {
+      Json value = random_json(random, 0);
+      if (random() % 2 == 0) {  // a list of lines, or an empty one
+        value = Json::array();
+        for (int k = static_cast<int>(random() % 4); k > 0; --k) {
+          Json element = random_json(random, 1);
+          value.push_back(random() % 2 == 0 ? Json::array({element}) : Json{{"e", element}});
+        }
+      }
+      document["m" + std::to_string(random() % 6)] = value;
+    }
+    std::ostringstream expected, streamed;
+    write_json_document(expected, document);
+    {
+      Json_stream out(streamed);
+      for (const auto& [key, value] : document.items()) {
+        out.member(key);
+        if (value.is_array() && !value.empty() && (value.front().is_object() || value.front().is_array())) {
+          out.begin_lines();
+          for (const Json& element : value) {
+            out.line();
+            stream_compact(out, element);
+          }
+          out.end_lines();
+        } else {
+          stream_compact(out, value);
+        }
+      }
+      out.finish();
+    }
+    REQUIRE(streamed.str() == expected.str());
+  }
+  // Infinities as json_number writes them; more than a buffer's worth of text.
+  std::ostringstream expected, streamed;
+  Json long_list = Json::array();
+  for (int k = 0; k < 20000; ++k) long_list.push_back(Json::array({json_number(k % 3 == 0 ? -HUGE_VAL : HUGE_VAL), k * 0.1}));
+  write_json_document(expected, Json{{"l", long_list}});
+  {
+    Json_stream out(streamed);
+    out.member("l");
+    out.begin_lines();
+    for (int k = 0; k < 20000; ++k) {
+      out.line();
+      out.begin_array();
+      out.number_or_infinity(k % 3 == 0 ? -HUGE_VAL : HUGE_VAL);
+      out.number_or_infinity(k * 0.1);
+      out.end_array();
+    }
+    out.end_lines();
+    out.finish();
+  }
+  CHECK(streamed.str() == expected.str());
 }
 
 TEST_CASE("JSON: every kind of value, escapes, and the line where each value starts") {
