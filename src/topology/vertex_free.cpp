@@ -15,6 +15,7 @@
 #include "predicates/curve_point_in_box.h"
 #include "predicates/sheet_point.h"
 #include "predicates/trisector_predicates.h"
+#include "predicates/trisector_rows.h"
 
 namespace apollonius {
 namespace {
@@ -202,15 +203,34 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   // triples and 16% of the pair occurrences pass this filter: only ellipses need more.
   std::vector<bool> escapes(sites.size(), false);
   for (Site_index s : regions.escaping) escapes[s] = true;
+  // So a triple that does not all escape can only be an ellipse, which it is not when its rows' Gram
+  // determinant is certainly positive (trisector_rows.h, in intervals from the box's pairwise power gaps):
+  // such a triple is left out before the occurrences are sorted. On 1j3h 95% of the occurrences go.
+  std::vector<Interval> gaps;  // of the box's sites i < j, at i * size + j
   const auto note = [&](const auto& set, std::size_t box) {
     throw_if_cancelled(cancellation);
-    for (std::size_t i = 0; i < set.size(); ++i)
-      for (std::size_t j = i + 1; j < set.size(); ++j) {
-        if (escapes[set[i]] && escapes[set[j]]) pair_seen.push_back({{set[i], set[j]}, box});
-        for (std::size_t k = j + 1; k < set.size(); ++k) triple_seen.push_back({{set[i], set[j], set[k]}, box});
+    const std::size_t size = set.size();
+    bool gaps_known = false;
+    const auto maybe_closed = [&](std::size_t i, std::size_t j, std::size_t k) {
+      if (!gaps_known) {
+        gaps.resize(size * size);
+        for (std::size_t x = 0; x < size; ++x)
+          for (std::size_t y = x + 1; y < size; ++y) gaps[x * size + y] = power_gap<Interval>(sites[set[x]], sites[set[y]]);
+        gaps_known = true;
+      }
+      return !(rows_gram_determinant(gaps[i * size + j], gaps[i * size + k], gaps[j * size + k]).inf() > 0);
+    };
+    for (std::size_t i = 0; i < size; ++i)
+      for (std::size_t j = i + 1; j < size; ++j) {
+        const bool both_escape = escapes[set[i]] && escapes[set[j]];
+        if (both_escape) pair_seen.push_back({{set[i], set[j]}, box});
+        for (std::size_t k = j + 1; k < size; ++k)
+          if ((both_escape && escapes[set[k]]) || maybe_closed(i, j, k))
+            triple_seen.push_back({{set[i], set[j], set[k]}, box});
       }
   };
-  // Reserved exactly: doubling a vector of tens of millions of occurrences copies it without a check.
+  // Reserved up front (pairs exactly, triples at most): doubling a vector of tens of millions of occurrences
+  // copies it without a check.
   std::size_t pair_count = 0, triple_count = 0;
   const auto count = [&](const auto& set) {
     const std::size_t k = set.size();
@@ -220,9 +240,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   for (const Octree_regions::Box& box : regions.boxes) count(box.sites);
   for (const std::vector<Site_index>& set : regions.far_sets) count(set);
   pair_seen.reserve(pair_count);
-  triple_seen.reserve(triple_count);
-  for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
-  for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
+  triple_seen.reserve(triple_count);  // an upper bound: the pages left out are never touched
+  {
+    Rounding_guard guard;  // for the intervals of maybe_closed
+    for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
+    for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
+  }
   const auto grouped = [&](auto& seen, auto skip) {
     cancellable_sort(seen.begin(), seen.end(), cancellation);
     std::vector<std::pair<typename std::decay_t<decltype(seen)>::value_type::first_type, Occurrences>> groups;

@@ -11,10 +11,12 @@
 //    segment between the two centres (sheet_point.h), which lies in the sites' bounding box, inside R.
 //  - an unbounded part (a whole sheet, a hyperbola branch, a parabola) has points of its sites' cells
 //    arbitrarily far, so all its sites escape: only pairs of escaping sites, and only ellipses or triples
-//    of escaping sites, are tested.
-// Cost: O(k^3) candidate triples per box of k sites, sorted and grouped; each candidate with no vertex
-// costs one classification, and those that pass the escaping test one witness, filtered, tested in
-// parallel with `threads`.
+//    of escaping sites, are tested. A triple that does not all escape is left out as soon as its
+//    trisector is certainly no ellipse (trisector_rows.h: the rows' Gram determinant, in intervals, is
+//    positive); the others go on to the exact classification.
+// Cost: O(k^3) triples per box of k sites, each one interval test unless its sites all escape; those kept
+// are sorted and grouped; each candidate with no vertex costs one classification, and those that pass the
+// escaping test one witness, filtered, tested in parallel with `threads`.
 #pragma once
 
 #include <utility>
