@@ -118,6 +118,10 @@ class Cell_integrator {
       return result;
     }
     Cell_measure& m = result.measure;
+    if (!options_.median_integrals) {  // the closed-form pieces added some: not the cell's, drop them
+      for (int c = kDistance; c < kFaceArea; ++c) total_[c] = 0, total_error_[c] = 0;
+      for (int c = kHessian; c < kComponents; ++c) total_[c] = 0;
+    }
     m.volume = total_[kVolume], m.volume_error = total_error_[kVolume];
     m.distance_integral = total_[kDistance], m.distance_error = total_error_[kDistance];
     m.direction_integral = {total_[kDirection], total_[kDirection + 1], total_[kDirection + 2]};
@@ -376,26 +380,28 @@ class Cell_integrator {
     if (distance * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
     const double t2 = t * t, t3 = t2 * t;
     v[kVolume] += weight * t3 / 3;
-    v[kDistance] += weight * t3 * t * p_norm / 4;
-    const double g = weight * t3 / (3 * p_norm);
-    v[kDirection] += g * p[0], v[kDirection + 1] += g * p[1], v[kDirection + 2] += g * p[2];
-    const double radial = weight * t2 / (2 * p_norm), inverse_norm2 = 1 / (p_norm * p_norm);
-    v[kHessian] += radial * (1 - p[0] * p[0] * inverse_norm2);
-    v[kHessian + 1] += radial * (1 - p[1] * p[1] * inverse_norm2);
-    v[kHessian + 2] += radial * (1 - p[2] * p[2] * inverse_norm2);
-    v[kHessian + 3] -= radial * p[0] * p[1] * inverse_norm2;
-    v[kHessian + 4] -= radial * p[0] * p[2] * inverse_norm2;
-    v[kHessian + 5] -= radial * p[1] * p[2] * inverse_norm2;
     const int cut = exits_[exit].cut;
     derivative = 0;
+    if (options_.median_integrals) {
+      v[kDistance] += weight * t3 * t * p_norm / 4;
+      const double g = weight * t3 / (3 * p_norm);
+      v[kDirection] += g * p[0], v[kDirection + 1] += g * p[1], v[kDirection + 2] += g * p[2];
+      const double radial = weight * t2 / (2 * p_norm), inverse_norm2 = 1 / (p_norm * p_norm);
+      v[kHessian] += radial * (1 - p[0] * p[0] * inverse_norm2);
+      v[kHessian + 1] += radial * (1 - p[1] * p[1] * inverse_norm2);
+      v[kHessian + 2] += radial * (1 - p[2] * p[2] * inverse_norm2);
+      v[kHessian + 3] -= radial * p[0] * p[1] * inverse_norm2;
+      v[kHessian + 4] -= radial * p[0] * p[2] * inverse_norm2;
+      v[kHessian + 5] -= radial * p[1] * p[2] * inverse_norm2;
+    }
     if (cut >= 0) {
       const Radial_cut& c = candidates_.cuts[cut];
       const double denominator = c.denominator(p, p_norm);
-      derivative = weight * t2 * c.tau_derivative(p, p_norm, denominator);
+      if (options_.median_integrals) derivative = weight * t2 * c.tau_derivative(p, p_norm, denominator);
       if (clipped_)  // the face's area element (cell_cubature.h)
         v[kFaceArea] += weight * t2 / p_norm * std::sqrt(2 * (distance + c.weight_step) * p_norm / denominator);
     } else if (cut == kSphere) {
-      v[kSphereArea] += weight * exits_[exit].h * exits_[exit].h * inverse_norm2 / p_norm;
+      v[kSphereArea] += weight * exits_[exit].h * exits_[exit].h / (p_norm * p_norm * p_norm);
     }
     return cut;
   }
@@ -554,9 +560,9 @@ class Cell_integrator {
   // Whether the errors of a panel (or inner piece) of the given width stay within share x its budget.
   bool within_budget(const Errors& e, double width, double share = 1) const {
     const double volume = share * volume_budget_ * width;
-    return e[kVolume] <= volume && e[kDistance] <= share * distance_budget_ * width &&
-           e[kDirection] + e[kDirection + 1] + e[kDirection + 2] <= volume &&
-           (!clipped_ || e[kFaceArea] + e[kSphereArea] <= share * area_budget_ * width);
+    return e[kVolume] <= volume && (!clipped_ || e[kFaceArea] + e[kSphereArea] <= share * area_budget_ * width) &&
+           (!options_.median_integrals || (e[kDistance] <= share * distance_budget_ * width &&
+                                           e[kDirection] + e[kDirection + 1] + e[kDirection + 2] <= volume));
   }
 
   // Gauss-Kronrod 15/31 over [l, r] in s, b = l + (r - l)(3 s^2 - 2 s^3): the substitution's derivative

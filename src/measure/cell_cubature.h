@@ -51,6 +51,9 @@ struct Cell_cubature_options {
   // sphere_area). The box must then contain that ball.
   double clip_radius = std::numeric_limits<double>::infinity();
   const Cancellation* cancellation = nullptr;  // checked once per outer panel and bracket
+  // False: only the volume and the boundary areas are integrated (contacts); the distance, direction and
+  // Hessian integrals and the volume derivatives stay zero, which spares most of each ray's arithmetic.
+  bool median_integrals = true;
 };
 
 struct Cell_cubature_result {
