@@ -54,12 +54,33 @@ struct Exit {
   int sign;
 };
 
+// Exit k along a line, in one form for cuts, planes and the sphere: tau(a) = N / (alpha |p| - e0 - e1 a)
+// where that denominator is positive, +infinity elsewhere. A cut: N = c / 2, alpha its weight step, e0 +
+// e1 a = p.D; a plane p[m] tau = h: N = |h|, alpha = 0, e0 + e1 a = -sign p[m]; the sphere: N = R, alpha =
+// 1, e = 0. Two exits then tie where |p| (N_j alpha_k - N_k alpha_j) = (N_j e0_k - N_k e0_j) + (N_j e1_k -
+// N_k e1_j) a (cell_cubature.h), and each ray costs one division per exit.
+struct Line_exit {
+  int k;  // index into the exits
+  double N, alpha, e0, e1;
+  double denominator(double a, double p_norm) const { return alpha * p_norm - e0 - e1 * a; }
+  double tau(double a, double p_norm) const {
+    const double d = denominator(a, p_norm);
+    return d > 0 ? N / d : std::numeric_limits<double>::infinity();
+  }
+};
+
 // The rays of face `face` at outer coordinate b: p(a) = q + a e, |p|^2 = s2 + a^2 (cell_cubature.h).
 struct Face_line {
   int face, inner_axis;
   Vector3 q;
   double s2;
-  std::vector<int> live;  // the exits that can be the least somewhere on the line
+  std::vector<int> live;         // the exits that can be the least somewhere on the line
+  std::vector<Line_exit> table;  // the live exits' forms, in the same order
+  const Line_exit& of(int k) const {
+    for (const Line_exit& x : table)
+      if (x.k == k) return x;
+    return table.front();  // not reached: pieces carry live exits only
+  }
   Vector3 at(double a) const {
     Vector3 p = q;
     p[inner_axis] += a;
@@ -118,6 +139,10 @@ class Cell_integrator {
       return result;
     }
     Cell_measure& m = result.measure;
+    if (!options_.median_integrals) {  // the closed-form pieces added some: not the cell's, drop them
+      for (int c = kDistance; c < kFaceArea; ++c) total_[c] = 0, total_error_[c] = 0;
+      for (int c = kHessian; c < kComponents; ++c) total_[c] = 0;
+    }
     m.volume = total_[kVolume], m.volume_error = total_error_[kVolume];
     m.distance_integral = total_[kDistance], m.distance_error = total_error_[kDistance];
     m.direction_integral = {total_[kDirection], total_[kDirection + 1], total_[kDirection + 2]};
@@ -142,9 +167,10 @@ class Cell_integrator {
  private:
   // ---- exits along one line ----
 
-  Face_line line(int face, double b, const std::vector<int>& from) const {
+  // The line at b, in a buffer reused from line to line (valid until the next call).
+  const Face_line& line(int face, double b, const std::vector<int>& from) const {
     const int axis = face / 2;
-    Face_line l;
+    Face_line& l = line_;
     l.face = face;
     l.inner_axis = (axis + 1) % 3;
     l.q = {0, 0, 0};
@@ -213,8 +239,22 @@ class Cell_integrator {
     }
     ceiling *= 1 + 1e-9;
     l.live.clear();
+    l.table.clear();
     for (int k : from)
-      if (ranges_[k].first * (1 - 1e-9) <= ceiling) l.live.push_back(k);
+      if (ranges_[k].first * (1 - 1e-9) <= ceiling) {
+        l.live.push_back(k);
+        l.table.push_back(line_exit(l, k));
+      }
+  }
+
+  Line_exit line_exit(const Face_line& l, int k) const {
+    const Exit& x = exits_[k];
+    if (x.cut >= 0) {
+      const Radial_cut& cut = candidates_.cuts[x.cut];
+      return {k, 0.5 * cut.numerator, cut.weight_step, dot(l.q, cut.offset), cut.offset[l.inner_axis]};
+    }
+    if (x.cut == kSphere) return {k, x.h, 1, 0, 0};
+    return {k, std::fabs(x.h), 0, -x.sign * l.q[x.axis], x.axis == l.inner_axis ? -1.0 * x.sign : 0.0};
   }
 
   // Keeps, of `from`, the exits whose least distance over the rectangle is at most the least of all their
@@ -233,65 +273,23 @@ class Cell_integrator {
       if (ranges_[k].first * (1 - 1e-9) <= ceiling) live.push_back(k);
   }
 
-  // tau of exit x along p, +infinity where it does not bound the ray.
-  double tau(const Exit& x, const Vector3& p, double p_norm) const {
-    if (x.cut >= 0) {
-      const Radial_cut& cut = candidates_.cuts[x.cut];
-      const double denominator = cut.denominator(p, p_norm);
-      return denominator > 0 ? cut.numerator / (2 * denominator) : kInfinity;
-    }
-    if (x.cut == kSphere) return x.h / p_norm;
-    return x.sign * p[x.axis] > 0 ? x.h / p[x.axis] : kInfinity;
-  }
-
-  int least_exit(const Face_line& l, const Vector3& p, double p_norm, double* least = nullptr) const {
+  int least_exit(const Face_line& l, double a, double p_norm, double* least = nullptr) const {
     int best = -1;
     double best_tau = kInfinity;
-    for (int k : l.live) {
-      const double t = tau(exits_[k], p, p_norm);
-      if (t < best_tau) best_tau = t, best = k;
+    for (const Line_exit& x : l.table) {
+      const double t = x.tau(a, p_norm);
+      if (t < best_tau) best_tau = t, best = x.k;
     }
     if (least) *least = best_tau;
     return best;
   }
 
-  // Where exits f and g tie along the line: |p| A = p.V (for two cuts, a cut and a plane, two planes, the
-  // sphere and a cut or a plane; see the derivations in cell_cubature.h), squared into a quadratic in a;
-  // roots where A and p.V differ in sign come from the squaring and are dropped. Appends the roots in
-  // (lo, hi).
-  void ties(const Face_line& l, const Exit& f, const Exit& g, double lo, double hi, double* roots, int& count) const {
-    double A;
-    Vector3 V;
-    if (f.cut == kSphere || g.cut == kSphere) {
-      const Exit& sphere = f.cut == kSphere ? f : g;
-      const Exit& other = f.cut == kSphere ? g : f;
-      const double R = sphere.h;
-      if (other.cut >= 0) {
-        const Radial_cut& j = candidates_.cuts[other.cut];
-        A = j.numerator - 2 * R * j.weight_step;
-        for (int a = 0; a < 3; ++a) V[a] = -2 * R * j.offset[a];
-      } else {
-        A = other.h;
-        V = {0, 0, 0};
-        V[other.axis] = R;
-      }
-    } else if (f.cut >= 0 && g.cut >= 0) {
-      const Radial_cut &j = candidates_.cuts[f.cut], &k = candidates_.cuts[g.cut];
-      A = j.numerator * k.weight_step - k.numerator * j.weight_step;
-      for (int a = 0; a < 3; ++a) V[a] = j.numerator * k.offset[a] - k.numerator * j.offset[a];
-    } else if (f.cut >= 0 || g.cut >= 0) {
-      const Exit& plane = f.cut >= 0 ? g : f;
-      const Radial_cut& j = candidates_.cuts[f.cut >= 0 ? f.cut : g.cut];
-      A = 2 * plane.h * j.weight_step;
-      for (int a = 0; a < 3; ++a) V[a] = 2 * plane.h * j.offset[a];
-      V[plane.axis] += j.numerator;
-    } else {
-      A = 0;
-      V = {0, 0, 0};
-      V[g.axis] += f.h;
-      V[f.axis] -= g.h;
-    }
-    const double b0 = dot(l.q, V), b1 = V[l.inner_axis];
+  // Where exits f and g tie along the line: |p| A = b0 + b1 a (Line_exit), squared into a quadratic in a;
+  // roots where A and b0 + b1 a differ in sign come from the squaring and are dropped. Appends the roots
+  // in (lo, hi).
+  static void ties(const Face_line& l, const Line_exit& f, const Line_exit& g, double lo, double hi, double* roots,
+                   int& count) {
+    const double A = f.N * g.alpha - g.N * f.alpha, b0 = f.N * g.e0 - g.N * f.e0, b1 = f.N * g.e1 - g.N * f.e1;
     const auto keep = [&](double r) {
       if (r > lo && r < hi && A * (b0 + b1 * r) >= 0) roots[count++] = r;
     };
@@ -311,39 +309,49 @@ class Cell_integrator {
     keep(t / qa);
   }
 
+  // The position in l.table of the least exit along the ray at a (0 if none bounds it: not reached, the
+  // box bounds every ray).
+  static std::size_t least_slot(const Face_line& l, double a) {
+    const double p_norm = std::sqrt(l.s2 + a * a);
+    std::size_t best = 0;
+    double best_tau = kInfinity;
+    for (std::size_t n = 0; n < l.table.size(); ++n) {
+      const double t = l.table[n].tau(a, p_norm);
+      if (t < best_tau) best_tau = t, best = n;
+    }
+    return best;
+  }
+
   // The pieces of the line: the least exit and where it changes, walking from a = -1 to 1 through the
   // ties of the current least exit with every other (a kinetic lower envelope). Each step moves right by
   // at least 1e-13, and a line whose pieces outnumber any real envelope's gives up into one checked piece.
   void walk(const Face_line& l, std::vector<Piece>& pieces) const {
     pieces.clear();
-    const auto least_at = [&](double a) {
-      const Vector3 p = l.at(a);
-      return least_exit(l, p, std::sqrt(l.s2 + a * a));
-    };
     double a = -1;
-    int current = least_at(-1 + 1e-9);
+    std::size_t current = least_slot(l, -1 + 1e-9);
     const std::size_t limit = 4 * l.live.size() + 8;
     double roots[2];
     while (pieces.size() < limit) {
       double next = 1;
-      for (int k : l.live) {
-        if (k == current) continue;
+      const Line_exit& c = l.table[current];
+      for (std::size_t n = 0; n < l.table.size(); ++n) {
+        if (n == current) continue;
+        const Line_exit& x = l.table[n];
         int count = 0;
-        ties(l, exits_[current], exits_[k], a + 1e-13, next, roots, count);
+        ties(l, c, x, a + 1e-13, next, roots, count);
         for (int r = 0; r < count; ++r) {
-          const Vector3 p = l.at(roots[r]);
           const double p_norm = std::sqrt(l.s2 + roots[r] * roots[r]);
-          if (tau(exits_[k], p, p_norm) < kInfinity && tau(exits_[current], p, p_norm) < kInfinity)
+          if (x.denominator(roots[r], p_norm) > 0 && c.denominator(roots[r], p_norm) > 0)
             next = std::min(next, roots[r]);
         }
       }
-      if (!pieces.empty() && pieces.back().exit == current)
+      if (!pieces.empty() && pieces.back().exit == c.k)
         pieces.back().a1 = next;
       else
-        pieces.push_back({a, next, current});
+        pieces.push_back({a, next, c.k});
       if (next >= 1) return;
       a = next;
-      current = least_at(std::min(next + 1e-10, 0.5 * (next + 1)));
+      current = least_slot(l, std::min(next + 1e-10, 0.5 * (next + 1)));
     }
     pieces.back().a1 = a;  // gave up: the rest is one piece, least exit at every node
     pieces.push_back({a, 1, -1});
@@ -362,40 +370,40 @@ class Cell_integrator {
 
   // Adds the integrands at a of line l, times weight, into v; the exit is `exit`, or the least when -1.
   // Returns the cut that is the exit (kPlane, kSphere otherwise) and sets derivative to weight tau^2 d tau / d alpha.
-  int add_node(const Face_line& l, double a, int exit, double weight, Values& v, double& derivative) {
+  int add_node(const Face_line& l, double a, const Line_exit* x, double weight, Values& v, double& derivative) {
     const Vector3 p = l.at(a);
     const double p_norm = std::sqrt(l.s2 + a * a);
-    double t;
-    if (exit < 0)
-      exit = least_exit(l, p, p_norm, &t);
-    else
-      t = tau(exits_[exit], p, p_norm);
+    if (!x) x = &l.table[least_slot(l, a)];
+    const double t = x->tau(a, p_norm);
+    const int exit = x->k;
     ++rays_;
     const double distance = t * p_norm;
     largest_exit_[l.face] = std::max(largest_exit_[l.face], distance);
     if (distance * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
     const double t2 = t * t, t3 = t2 * t;
     v[kVolume] += weight * t3 / 3;
-    v[kDistance] += weight * t3 * t * p_norm / 4;
-    const double g = weight * t3 / (3 * p_norm);
-    v[kDirection] += g * p[0], v[kDirection + 1] += g * p[1], v[kDirection + 2] += g * p[2];
-    const double radial = weight * t2 / (2 * p_norm), inverse_norm2 = 1 / (p_norm * p_norm);
-    v[kHessian] += radial * (1 - p[0] * p[0] * inverse_norm2);
-    v[kHessian + 1] += radial * (1 - p[1] * p[1] * inverse_norm2);
-    v[kHessian + 2] += radial * (1 - p[2] * p[2] * inverse_norm2);
-    v[kHessian + 3] -= radial * p[0] * p[1] * inverse_norm2;
-    v[kHessian + 4] -= radial * p[0] * p[2] * inverse_norm2;
-    v[kHessian + 5] -= radial * p[1] * p[2] * inverse_norm2;
     const int cut = exits_[exit].cut;
     derivative = 0;
+    if (options_.median_integrals) {
+      v[kDistance] += weight * t3 * t * p_norm / 4;
+      const double g = weight * t3 / (3 * p_norm);
+      v[kDirection] += g * p[0], v[kDirection + 1] += g * p[1], v[kDirection + 2] += g * p[2];
+      const double radial = weight * t2 / (2 * p_norm), inverse_norm2 = 1 / (p_norm * p_norm);
+      v[kHessian] += radial * (1 - p[0] * p[0] * inverse_norm2);
+      v[kHessian + 1] += radial * (1 - p[1] * p[1] * inverse_norm2);
+      v[kHessian + 2] += radial * (1 - p[2] * p[2] * inverse_norm2);
+      v[kHessian + 3] -= radial * p[0] * p[1] * inverse_norm2;
+      v[kHessian + 4] -= radial * p[0] * p[2] * inverse_norm2;
+      v[kHessian + 5] -= radial * p[1] * p[2] * inverse_norm2;
+    }
     if (cut >= 0) {
       const Radial_cut& c = candidates_.cuts[cut];
-      const double denominator = c.denominator(p, p_norm);
-      derivative = weight * t2 * c.tau_derivative(p, p_norm, denominator);
+      const double denominator = x->denominator(a, p_norm);
+      if (options_.median_integrals) derivative = weight * t2 * c.tau_derivative(p, p_norm, denominator);
       if (clipped_)  // the face's area element (cell_cubature.h)
         v[kFaceArea] += weight * t2 / p_norm * std::sqrt(2 * (distance + c.weight_step) * p_norm / denominator);
     } else if (cut == kSphere) {
-      v[kSphereArea] += weight * exits_[exit].h * exits_[exit].h * inverse_norm2 / p_norm;
+      v[kSphereArea] += weight * exits_[exit].h * exits_[exit].h / (p_norm * p_norm * p_norm);
     }
     return cut;
   }
@@ -404,6 +412,7 @@ class Cell_integrator {
   // of the inner budget.
   void integrate_piece(const Face_line& l, double a0, double a1, int exit, int depth, Line_result& out) {
     const double half = 0.5 * (a1 - a0), middle = 0.5 * (a0 + a1);
+    const Line_exit* x = exit >= 0 ? &l.of(exit) : nullptr;
     Values kronrod{}, gauss{};
     std::array<Cut_integral, 31> cuts;
     std::array<Errors, 31> controlled;
@@ -411,7 +420,7 @@ class Cell_integrator {
     for (std::size_t k = 0; k < inner_.node.size(); ++k) {
       Values v{};
       double derivative;
-      const int cut = add_node(l, middle + half * inner_.node[k], exit, 1, v, derivative);
+      const int cut = add_node(l, middle + half * inner_.node[k], x, 1, v, derivative);
       if (cut >= 0)
         cuts[cut_count++] = {cut, half * inner_.kronrod[k] * derivative, half * inner_.kronrod[k] * v[kFaceArea], 0};
       for (int c = 0; c < kComponents; ++c) kronrod[c] += inner_.kronrod[k] * v[c], gauss[c] += inner_.gauss[k] * v[c];
@@ -450,19 +459,16 @@ class Cell_integrator {
   // The integrals along the line at b: its pieces, each checked at its middle (the least exit there must
   // be the piece's, else the piece is integrated with the least exit at every node).
   Line_result integrate_line(int face, double b, const std::vector<int>& from) {
-    const Face_line l = line(face, b, from);
-    std::vector<Piece> pieces;
-    walk(l, pieces);
+    const Face_line& l = line(face, b, from);
+    walk(l, pieces_);
     Line_result result;
-    for (const Piece& piece : pieces) {
+    for (const Piece& piece : pieces_) {
       int exit = piece.exit;
       if (exit >= 0) {
-        const double a = 0.5 * (piece.a0 + piece.a1);
-        const Vector3 p = l.at(a);
-        const double p_norm = std::sqrt(l.s2 + a * a);
+        const double a = 0.5 * (piece.a0 + piece.a1), p_norm = std::sqrt(l.s2 + a * a);
         double least;
-        least_exit(l, p, p_norm, &least);
-        if (least < tau(exits_[exit], p, p_norm) * (1 - 1e-12)) exit = -1;
+        least_exit(l, a, p_norm, &least);
+        if (least < l.of(exit).tau(a, p_norm) * (1 - 1e-12)) exit = -1;
       }
       if (exit >= 0 && exits_[exit].cut == kPlane && exits_[exit].axis != l.inner_axis)
         integrate_flat_piece(l, piece.a0, piece.a1, exits_[exit], result);
@@ -554,9 +560,9 @@ class Cell_integrator {
   // Whether the errors of a panel (or inner piece) of the given width stay within share x its budget.
   bool within_budget(const Errors& e, double width, double share = 1) const {
     const double volume = share * volume_budget_ * width;
-    return e[kVolume] <= volume && e[kDistance] <= share * distance_budget_ * width &&
-           e[kDirection] + e[kDirection + 1] + e[kDirection + 2] <= volume &&
-           (!clipped_ || e[kFaceArea] + e[kSphereArea] <= share * area_budget_ * width);
+    return e[kVolume] <= volume && (!clipped_ || e[kFaceArea] + e[kSphereArea] <= share * area_budget_ * width) &&
+           (!options_.median_integrals || (e[kDistance] <= share * distance_budget_ * width &&
+                                           e[kDirection] + e[kDirection + 1] + e[kDirection + 2] <= volume));
   }
 
   // Gauss-Kronrod 15/31 over [l, r] in s, b = l + (r - l)(3 s^2 - 2 s^3): the substitution's derivative
@@ -712,6 +718,7 @@ class Cell_integrator {
   const Gauss_kronrod_rule inner_, outer_;
   std::vector<Exit> exits_;
   std::vector<Piece> pieces_;
+  mutable Face_line line_;
   mutable std::vector<std::pair<double, double>> ranges_;
   std::array<std::vector<int>, 6> face_live_;  // the exits that can be the least somewhere on each face
   const bool clipped_;  // a clip radius: the sphere is an exit, and the areas are integrated

@@ -12,6 +12,9 @@
 // c = |D|^2 - alpha^2; a cut and the plane p[m] tau = h: A = 2 h alpha_j, V = c_j e_m + 2 h D_j; two planes:
 // A = 0, V = h_m e_n - h_n e_m), so along a line of fixed b the ties are the roots of a quadratic in a.
 //
+// Along a line every exit is tau(a) = N / (alpha |p| - e0 - e1 a) where that is positive (cell_cubature.cpp,
+// Line_exit), tabulated once per line, so that a ray costs one division per exit and a tie one quadratic.
+//
 // Quadrature, nested. Inner, along each line of fixed b: the least exit and its breakpoints by a walk
 // through those roots (a kinetic lower envelope), then Gauss-Kronrod 7/15 on each smooth piece, halved
 // while its estimate is large. Outer, over b: the lines' sequences of exits change only at isolated
@@ -51,6 +54,9 @@ struct Cell_cubature_options {
   // sphere_area). The box must then contain that ball.
   double clip_radius = std::numeric_limits<double>::infinity();
   const Cancellation* cancellation = nullptr;  // checked once per outer panel and bracket
+  // False: only the volume and the boundary areas are integrated (contacts); the distance, direction and
+  // Hessian integrals and the volume derivatives stay zero, which spares most of each ray's arithmetic.
+  bool median_integrals = true;
 };
 
 struct Cell_cubature_result {

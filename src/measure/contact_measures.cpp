@@ -30,37 +30,45 @@ class Ball_grid {
     for (Site_index i : members) cells_[key(cell_of(sites[i]))].push_back(i);
   }
 
-  // Calls f(j) for every member j in the 27 grid cells around site s (j = s included).
+  // Calls f(j) once for every member j in the 27 grid cells around site s (j = s included). Cells clamped
+  // together (far sites) can make two of the 27 keys equal: each key is visited once.
   template <class F>
   void near(const Site& s, F&& f) const {
     const std::array<std::int64_t, 3> c = cell_of(s);
+    std::array<std::uint64_t, 27> keys;
+    int count = 0;
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto found = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
-          if (found == cells_.end()) continue;
-          for (Site_index j : found->second) f(j);
-        }
+        for (std::int64_t dz = -1; dz <= 1; ++dz) keys[count++] = key({c[0] + dx, c[1] + dy, c[2] + dz});
+    std::sort(keys.begin(), keys.end());
+    for (int k = 0; k < count; ++k) {
+      if (k > 0 && keys[k] == keys[k - 1]) continue;
+      const auto found = cells_.find(keys[k]);
+      if (found == cells_.end()) continue;
+      for (Site_index j : found->second) f(j);
+    }
   }
 
  private:
+  // Grid coordinates are clamped to [-2^20, 2^20 - 1] (far sites then share cells, which costs time, not
+  // answers), so that the key packs them exactly: distinct cells never share a key.
+  static constexpr std::int64_t kLimit = std::int64_t{1} << 20;
   std::array<std::int64_t, 3> cell_of(const Site& s) const {
-    // Coordinates beyond 2^40 cells are clamped: far sites then share cells, which costs time, not answers.
     const auto index = [&](double x) {
       const double q = side_ > 0 ? std::floor(x / side_) : 0;
-      return static_cast<std::int64_t>(std::clamp(q, -1099511627776.0, 1099511627776.0));
+      return static_cast<std::int64_t>(std::clamp(q, -static_cast<double>(kLimit), static_cast<double>(kLimit - 1)));
     };
     return {index(s.x), index(s.y), index(s.z)};
   }
   static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
-    return h;
+    std::uint64_t k = 0;
+    for (std::int64_t v : c) k = (k << 21) | static_cast<std::uint64_t>(std::clamp(v, -kLimit, kLimit - 1) + kLimit);
+    return k;
   }
 
   const std::vector<Site>& sites_;
   double side_ = 0;
-  std::unordered_map<std::uint64_t, std::vector<Site_index>> cells_;  // key collisions only merge cells
+  std::unordered_map<std::uint64_t, std::vector<Site_index>> cells_;  // by key(): one entry per grid cell
 };
 
 }  // namespace
@@ -112,6 +120,7 @@ Contact_measures measure_contacts(const std::vector<Site>& sites, const Contact_
       cubature.relative_tolerance = options.relative_tolerance;
       cubature.clip_radius = radius;
       cubature.cancellation = options.cancellation;
+      cubature.median_integrals = false;
       const Cell_cubature_result cell = integrate_cell(s, candidates, box, cubature);
       if (cell.clearance_exceeded) throw std::logic_error("measure_contacts: a clipped cell exceeded its clearance");
       const Cell_measure& measure = cell.measure;

@@ -125,6 +125,19 @@ TEST_CASE("two balls: the face against a surface-of-revolution integral, the uni
     }
 }
 
+TEST_CASE("far balls, whose grid cells are clamped together, still find each other") {
+  // 1e7 is beyond the neighbour grid's 2^20 cells of side 2 (w + P): both balls share the clamped cell, and
+  // the neighbouring cells clamp onto it too.
+  for (const double x : {1e7, -1e7}) {
+    CAPTURE(x);
+    const double w = 1.5, D = 2, probe = 1.4, R = w + probe;
+    const Contact_measures m = measure_contacts({{x, x, x, w}, {x + D, x, x, w}}, {probe, 1e-8});
+    const Contact* c = find_contact(m, 0, 1);
+    REQUIRE(c != nullptr);
+    check_estimate(c->area, c->error, kPi * (R * R - D * D / 4));
+  }
+}
+
 TEST_CASE("hidden and duplicate balls have no contacts, SAS or volume, and leave the others' as they were") {
   const std::vector<Site> alone = {{0, 0, 0, 2}, {3, 0, 0, 1}};
   std::vector<Site> with_hidden = alone;
