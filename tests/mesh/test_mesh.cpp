@@ -230,3 +230,24 @@ TEST_CASE("quality measures: 1 for an equilateral triangle, lower otherwise") {
   CHECK(r.values[3] == doctest::Approx(2 * inradius / circumradius));
   CHECK(r.values[4] == doctest::Approx(2 * std::sqrt(3.0) * inradius));
 }
+
+TEST_CASE("a thin bounded face whose chords miss its interior is meshed (BALL_SMALL_1000, cells 99 and 872)") {
+  // The face of balls 99 and 872 is bounded by four short edges; the lifted centroid of its chords' polygon
+  // lies outside it, which once left both cells open. A bounded face is now the inside of its polylines.
+  const Site_input input =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) + "/../../bench/data/vdrc/BALL_SMALL_1000.txt", Read_options{});
+  const Diagram_topology topology = topology_of(input.sites);
+  Mesh_options options;
+  options.lloyd_iterations = 2;
+  options.sites = {99, 872};
+  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+  CHECK(mesh.statistics.open_rims == 0);
+  for (Site_index cell : options.sites) {
+    const auto triangles = cell_triangles(mesh, cell);
+    REQUIRE(!triangles.empty());
+    CHECK(check_cell(mesh, triangles).closed);
+  }
+  bool face_meshed = false;
+  for (const Mesh_triangle& t : mesh.triangles) face_meshed = face_meshed || (t.site_a == 99 && t.site_b == 872);
+  CHECK(face_meshed);
+}
