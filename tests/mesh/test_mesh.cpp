@@ -21,6 +21,7 @@
 #include <random>
 
 #include "io/read_sites.h"
+#include "measure/cell_measures.h"
 #include "mesh/diagram_mesh.h"
 #include "mesh/edge_samples.h"
 #include "mesh/mesh_quality.h"
@@ -250,4 +251,24 @@ TEST_CASE("a thin bounded face whose chords miss its interior is meshed (BALL_SM
   bool face_meshed = false;
   for (const Mesh_triangle& t : mesh.triangles) face_meshed = face_meshed || (t.site_a == 99 && t.site_b == 872);
   CHECK(face_meshed);
+}
+
+// Open: measure_cells (src/measure) disagrees with the closed meshes and with Monte Carlo on this input;
+// the test passes once it agrees (docs/benchmarks.md, "Meshes").
+TEST_CASE("measure_cells against the mesh volumes (known disagreement)" * doctest::may_fail()) {
+  const Site_input input =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/measure_cells_volumes_exceed_box.balls", Read_options{});
+  const Diagram_topology topology = topology_of(input.sites);
+  Mesh_options options;
+  options.step = 0.05;
+  options.lloyd_iterations = 2;
+  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+  const std::vector<Cell_measure> exact = measure_cells(input.sites, topology.vertices, mesh.box);
+  for (const Diagram_cell& cell : topology.cells) {
+    CAPTURE(cell.site);
+    const auto triangles = cell_triangles(mesh, cell.site);
+    const Cell_check c = check_cell(mesh, triangles);
+    MESSAGE("mesh " << c.volume << " measure " << exact[cell.site].volume << " box " << box_volume(mesh.box));
+    CHECK(std::abs(c.volume - exact[cell.site].volume) <= 0.05 * mesh.step * c.area);
+  }
 }
