@@ -209,9 +209,32 @@ struct Builder {
           input.polylines.push_back(std::move(line));
         }
     }
-    input.inside = [&, c](const Point2& p) {
+    // A bounded face is the inside of its boundary polylines (odd crossing parity): decided on the
+    // polylines themselves, so a thin face whose chords miss its interior is still meshed. The rest of an
+    // unbounded face's plane is judged by the nearest sites at the region's witness point.
+    std::vector<std::vector<std::pair<Point2, Point2>>> bounded_segments;
+    bool any_unbounded = false;
+    for (std::size_t f : face_ids) {
+      if (!topology.faces[f].bounded) {
+        any_unbounded = true;
+        continue;
+      }
+      std::vector<std::pair<Point2, Point2>> segments;
+      for (const auto& component : topology.faces[f].boundary)
+        for (std::size_t e : component)
+          for (std::size_t k = 0; k + 1 < polylines[e].ids.size(); ++k)
+            segments.push_back({frame.project(points[polylines[e].ids[k]]), frame.project(points[polylines[e].ids[k + 1]])});
+      bounded_segments.push_back(std::move(segments));
+    }
+    input.inside = [&, c, any_unbounded](const Point2& p) {
       if (std::hypot(p[0] - c[0], p[1] - c[1]) >= cut_radius * 1.05) return false;
-      return pair_nearest(a, b, frame.lift(p));
+      for (const auto& segments : bounded_segments) {
+        bool odd = false;
+        for (const auto& [u, v] : segments)
+          if ((u[1] > p[1]) != (v[1] > p[1]) && p[0] < u[0] + (p[1] - u[1]) * (v[0] - u[0]) / (v[1] - u[1])) odd = !odd;
+        if (odd) return true;
+      }
+      return any_unbounded && pair_nearest(a, b, frame.lift(p));
     };
     input.lift = [&frame](const Point2& p) { return frame.lift(p); };
     input.density = [&frame](const Point2& p) { return frame.area_ratio(p); };

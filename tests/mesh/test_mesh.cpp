@@ -21,6 +21,7 @@
 #include <random>
 
 #include "io/read_sites.h"
+#include "measure/cell_measures.h"
 #include "mesh/diagram_mesh.h"
 #include "mesh/edge_samples.h"
 #include "mesh/mesh_quality.h"
@@ -229,4 +230,45 @@ TEST_CASE("quality measures: 1 for an equilateral triangle, lower otherwise") {
   const double inradius = 1 / (2 + std::sqrt(2.0)), circumradius = std::sqrt(2.0) / 2;
   CHECK(r.values[3] == doctest::Approx(2 * inradius / circumradius));
   CHECK(r.values[4] == doctest::Approx(2 * std::sqrt(3.0) * inradius));
+}
+
+TEST_CASE("a thin bounded face whose chords miss its interior is meshed (BALL_SMALL_1000, cells 99 and 872)") {
+  // The face of balls 99 and 872 is bounded by four short edges; the lifted centroid of its chords' polygon
+  // lies outside it, which once left both cells open. A bounded face is now the inside of its polylines.
+  const Site_input input =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) + "/../../bench/data/vdrc/BALL_SMALL_1000.txt", Read_options{});
+  const Diagram_topology topology = topology_of(input.sites);
+  Mesh_options options;
+  options.lloyd_iterations = 2;
+  options.sites = {99, 872};
+  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+  CHECK(mesh.statistics.open_rims == 0);
+  for (Site_index cell : options.sites) {
+    const auto triangles = cell_triangles(mesh, cell);
+    REQUIRE(!triangles.empty());
+    CHECK(check_cell(mesh, triangles).closed);
+  }
+  bool face_meshed = false;
+  for (const Mesh_triangle& t : mesh.triangles) face_meshed = face_meshed || (t.site_a == 99 && t.site_b == 872);
+  CHECK(face_meshed);
+}
+
+// Open: measure_cells (src/measure) disagrees with the closed meshes and with Monte Carlo on this input;
+// the test passes once it agrees (docs/benchmarks.md, "Meshes").
+TEST_CASE("measure_cells against the mesh volumes (known disagreement)" * doctest::may_fail()) {
+  const Site_input input =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/measure_cells_volumes_exceed_box.balls", Read_options{});
+  const Diagram_topology topology = topology_of(input.sites);
+  Mesh_options options;
+  options.step = 0.05;
+  options.lloyd_iterations = 2;
+  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+  const std::vector<Cell_measure> exact = measure_cells(input.sites, topology.vertices, mesh.box);
+  for (const Diagram_cell& cell : topology.cells) {
+    CAPTURE(cell.site);
+    const auto triangles = cell_triangles(mesh, cell.site);
+    const Cell_check c = check_cell(mesh, triangles);
+    MESSAGE("mesh " << c.volume << " measure " << exact[cell.site].volume << " box " << box_volume(mesh.box));
+    CHECK(std::abs(c.volume - exact[cell.site].volume) <= 0.05 * mesh.step * c.area);
+  }
 }
