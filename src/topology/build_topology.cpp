@@ -71,15 +71,27 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   s.candidate_triples = parts.candidate_triples;
   s.candidate_pairs = parts.candidate_pairs;
   start = Clock::now();
-  add_faces_and_cells(sites, topology, parts.sheets, regions.escaping, options.threads, options.cancellation);
+  add_faces_and_cells(sites, topology, parts.sheets, regions.far_sets, options.threads, options.cancellation);
   s.faces_seconds = seconds(start);
   return topology;
 }
 
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
                          const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
-                         const std::vector<Site_index>& escaping, int threads, const Cancellation* cancellation) {
-  const auto escapes = [&](Site_index s) { return std::binary_search(escaping.begin(), escaping.end(), s); };
+                         const std::vector<std::vector<Site_index>>& far_sets, int threads,
+                         const Cancellation* cancellation) {
+  // Whether a far set holds both sites: else their faces have no point far away, and are all bounded.
+  std::vector<std::vector<std::size_t>> far_sets_of(sites.size());
+  for (std::size_t f = 0; f < far_sets.size(); ++f)
+    for (Site_index s : far_sets[f]) far_sets_of[s].push_back(f);
+  const auto far_together = [&](Site_index a, Site_index b) {
+    const std::vector<std::size_t>&x = far_sets_of[a], &y = far_sets_of[b];
+    for (std::size_t i = 0, j = 0; i < x.size() && j < y.size();) {
+      if (x[i] == y[j]) return true;
+      x[i] < y[j] ? ++i : ++j;
+    }
+    return false;
+  };
   const Diagram& diagram = topology.vertices;
   for (const auto& [a, b] : whole_sheets) topology.faces.push_back({a, b, {}, false});
   // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
@@ -102,8 +114,9 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
     for (; i < components.size() && components[i].a == c.a && components[i].b == c.b; ++i)
       p.components.push_back(&components[i]);
     // An open chain alone bounds one unbounded face; a closed cycle alone of sites that own no point far
-    // away bounds one bounded face (it contains no neighbourhood of infinity).
-    p.nested = p.components.size() > 1 || (c.closed && escapes(c.a) && escapes(c.b));
+    // away together bounds one bounded face (it contains no neighbourhood of infinity). On proteins nearly
+    // every nested pair was such a cycle of two escaping sites, until the far sets decided them.
+    p.nested = p.components.size() > 1 || (c.closed && far_together(c.a, c.b));
     pairs.push_back(std::move(p));
   }
   // The pairs' nestings are independent: in parallel, each into its own slot, so the output is the same

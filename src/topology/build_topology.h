@@ -31,11 +31,12 @@ Octree_regions regions_for_every_site(const Diagram& diagram);
 // The steps of build_topology, for tests: the edges that have a vertex (faces and cells left empty), and
 // the faces and cells from all the edges and the whole-sheet faces.
 Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options = {});
-// `escaping` (ascending) must contain every site that owns a point outside some bounded region (the
-// octree's escaping sites, or every site): a face of two sites not both in it is bounded.
+// `far_sets` (each ascending) must cover the points outside some bounded region: each such point's owners
+// all in one of them (the octree's far sets, or one set of every site). A face of two sites that no far
+// set holds together is bounded.
 void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topology,
                          const std::vector<std::pair<Site_index, Site_index>>& whole_sheets,
-                         const std::vector<Site_index>& escaping, int threads = 1,
+                         const std::vector<std::vector<Site_index>>& far_sets, int threads = 1,
                          const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

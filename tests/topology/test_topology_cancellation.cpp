@@ -107,7 +107,7 @@ TEST_CASE("a cancellation requested before the call stops build_topology, and ev
     CHECK_THROWS_AS(build_edges(sites, v.diagram, {threads, &cancellation}), Cancelled);
     CHECK_THROWS_AS(vertex_free_parts(sites, whole.vertices, whole.edges, v.regions, threads, &cancellation), Cancelled);
     Diagram_topology faces_to_add = build_edges(sites, v.diagram);
-    CHECK_THROWS_AS(add_faces_and_cells(sites, faces_to_add, {}, v.regions.escaping, threads, &cancellation), Cancelled);
+    CHECK_THROWS_AS(add_faces_and_cells(sites, faces_to_add, {}, v.regions.far_sets, threads, &cancellation), Cancelled);
   }
   std::vector<std::vector<Departure>> departures;
   for (const Diagram_vertex& vertex : whole.vertices.vertices) departures.push_back(vertex_departures(sites, vertex));
