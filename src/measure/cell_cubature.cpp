@@ -28,6 +28,9 @@ constexpr std::size_t kMaxPanels = 20000;
 // squared times the jump in the slope of the line integrals, far below any tolerance, and the smooth
 // panels beside it end where the (b - b*)^(3/2) terms are smoothed by the substitution.
 constexpr double kEventWidth = 1e-6;
+// ... or the tolerance, when that is larger (up to 1e-4): the bracket's error, about its width squared
+// times the slope's jump, stays far below the tolerance's share of it.
+double event_width(double tolerance) { return std::clamp(tolerance, kEventWidth, 1e-4); }
 // Signatures sampled per face before the bisections.
 constexpr int kFaceSamples = 3;
 
@@ -409,8 +412,13 @@ class Cell_integrator {
   }
 
   // One piece of a line by Gauss-Kronrod 7/15, halved while its volume error estimate exceeds its share
-  // of the inner budget.
+  // of the inner budget. Without the median integrals (kMedian false) only the volume and the two areas
+  // are summed: the other components are zero at every node.
+  template <bool kMedian>
   void integrate_piece(const Face_line& l, double a0, double a1, int exit, int depth, Line_result& out) {
+    constexpr int kCount = kMedian ? kComponents : 3, kControlledCount = kMedian ? kControlled : 3;
+    // The n-th component summed: all of them, or the volume and the areas.
+    constexpr auto component = [](int n) { return kMedian || n == 0 ? n : n == 1 ? kFaceArea : kSphereArea; };
     const double half = 0.5 * (a1 - a0), middle = 0.5 * (a0 + a1);
     const Line_exit* x = exit >= 0 ? &l.of(exit) : nullptr;
     Values kronrod{}, gauss{};
@@ -423,18 +431,22 @@ class Cell_integrator {
       const int cut = add_node(l, middle + half * inner_.node[k], x, 1, v, derivative);
       if (cut >= 0)
         cuts[cut_count++] = {cut, half * inner_.kronrod[k] * derivative, half * inner_.kronrod[k] * v[kFaceArea], 0};
-      for (int c = 0; c < kComponents; ++c) kronrod[c] += inner_.kronrod[k] * v[c], gauss[c] += inner_.gauss[k] * v[c];
-      for (int c = 0; c < kControlled; ++c) controlled[k][c] = v[c];
+      for (int n = 0; n < kCount; ++n) {
+        const int c = component(n);
+        kronrod[c] += inner_.kronrod[k] * v[c], gauss[c] += inner_.gauss[k] * v[c];
+      }
+      for (int n = 0; n < kControlledCount; ++n) controlled[k][component(n)] = v[component(n)];
     }
-    Errors error;
-    for (int c = 0; c < kControlled; ++c) {
+    Errors error{};
+    for (int n = 0; n < kControlledCount; ++n) {
+      const int c = component(n);
       double resasc = 0;
       for (std::size_t k = 0; k < inner_.node.size(); ++k) resasc += inner_.kronrod[k] * std::fabs(controlled[k][c] - 0.5 * kronrod[c]);
       error[c] = kronrod_error(half * std::fabs(kronrod[c] - gauss[c]), half * resasc);
     }
     if (!within_budget(error, a1 - a0, kInnerShare) && depth < 16 && a1 - a0 > 1e-12) {
-      integrate_piece(l, a0, middle, exit, depth + 1, out);
-      integrate_piece(l, middle, a1, exit, depth + 1, out);
+      integrate_piece<kMedian>(l, a0, middle, exit, depth + 1, out);
+      integrate_piece<kMedian>(l, middle, a1, exit, depth + 1, out);
       return;
     }
     for (int c = 0; c < kComponents; ++c) out.value[c] += half * kronrod[c];
@@ -474,8 +486,10 @@ class Cell_integrator {
         integrate_flat_piece(l, piece.a0, piece.a1, exits_[exit], result);
       else if (exit >= 0 && exits_[exit].cut == kSphere)
         integrate_sphere_piece(l, piece.a0, piece.a1, exits_[exit].h, result);
+      else if (options_.median_integrals)
+        integrate_piece<true>(l, piece.a0, piece.a1, exit, 0, result);
       else
-        integrate_piece(l, piece.a0, piece.a1, exit, 0, result);
+        integrate_piece<false>(l, piece.a0, piece.a1, exit, 0, result);
     }
     return result;
   }
@@ -617,7 +631,7 @@ class Cell_integrator {
     return true;
   }
 
-  // A bracket of width <= kEventWidth around an event: two-point Gauss, its error estimated by the
+  // A bracket of width <= event_width() around an event: two-point Gauss, its error estimated by the
   // variation across it.
   void bracket(int face, double l, double r, const std::vector<int>& from) {
     throw_if_cancelled(options_.cancellation);
@@ -648,7 +662,7 @@ class Cell_integrator {
   }
 
   // [l, r] with the signatures at its ends. Where they differ, bisection on the signatures alone keeps
-  // the left end's signature at lo and a different one at hi, down to a bracket of width kEventWidth: the
+  // the left end's signature at lo and a different one at hi, down to a bracket of width event_width(): the
   // panel [l, lo] then has no event at either end, and the rest [hi, r] is treated alike. A smooth panel
   // whose estimate misses its budget is halved, which also uncovers events that left the signatures at
   // both ends equal.
@@ -660,7 +674,7 @@ class Cell_integrator {
     if (left != right) {
       double lo = l, hi = r;
       std::vector<int> high = right, narrow = live;
-      for (int step = 1; hi - lo > kEventWidth; ++step) {
+      for (int step = 1; hi - lo > event_width(options_.relative_tolerance); ++step) {
         if (step % 4 == 0) {
           const std::vector<int> wider = narrow;
           prune({face, -1, 1, lo, hi}, wider, narrow);
