@@ -22,6 +22,8 @@ struct Mesh_command {
   std::string output;
   double step = 0;
   std::vector<double> box;  // empty, or X0 Y0 Z0 X1 Y1 Z1
+  double probe = 1.4;
+  CLI::Option* probe_option = nullptr;
   std::vector<long long> sites;
   int lloyd = 20;
   bool quality = false, ascii = false, stats = false;
@@ -49,6 +51,12 @@ int run(const Mesh_command& command, std::ostream& out, std::ostream& err) {
       options.box.lo[k] = command.box[k], options.box.hi[k] = command.box[k + 3];
       if (!(options.box.lo[k] < options.box.hi[k])) throw Usage_error("--box needs X0 < X1, Y0 < Y1, Z0 < Z1");
     }
+  }
+  if (command.probe_option->count() > 0) {
+    if (!command.box.empty()) throw Usage_error("--box and --probe exclude each other");
+    if (!(command.probe >= 0)) throw Usage_error("--probe must be a number >= 0, not " + round_trip(command.probe));
+    options.has_probe = true;
+    options.probe = command.probe;
   }
   const Site_input input = read_sites(command.input, command.diagram.read_options);
   for (long long s : command.sites) {
@@ -115,6 +123,12 @@ Command_run add_mesh_command(CLI::App& app) {
       ->expected(6)
       ->check(finite_number)
       ->type_name("X0 Y0 Z0 X1 Y1 Z1");
+  command->probe_option =
+      sub->add_option("--probe", command->probe,
+                      "cuts each face (i, j) where d_i <= P and closes each cell by its sphere of radius w_i + P "
+                      "(as 'contacts'), instead of a box")
+          ->check(finite_number)
+          ->type_name("P");
   sub->add_option("--sites", command->sites, "only the cells of these sites (0-based), e.g. --sites 3,7,12")
       ->delimiter(',')
       ->type_name("I,J,...");

@@ -312,10 +312,13 @@ struct Builder {
 
   // ---- The cut by the box's planes --------------------------------------------------------------------
 
+  // Cuts 0 to 5 are the box's planes; cut 6 (kProbe) the probe-expanded ball of the site concerned.
+  static constexpr int kProbe = 6;
   static int axis_of(int wall) { return wall / 2; }
   double bound_of(int wall) const { return wall % 2 ? box.hi[wall / 2] : box.lo[wall / 2]; }
-  // Positive outside the wall's half-space.
-  double outside(const Point3& x, int wall) const {
+  // Positive outside the wall's half-space, or outside site s's ball of radius w_s + P.
+  double outside(const Point3& x, int wall, Site_index s = 0) const {
+    if (wall == kProbe) return distance(x, Point3{sites[s].x, sites[s].y, sites[s].z}) - sites[s].w - options.probe;
     return wall % 2 ? x[wall / 2] - box.hi[wall / 2] : box.lo[wall / 2] - x[wall / 2];
   }
 
@@ -326,8 +329,8 @@ struct Builder {
   std::uint32_t crossing(std::uint32_t u, std::uint32_t v, int wall, Site_index a, Site_index b) {
     const auto key = std::make_tuple(std::min(u, v), std::max(u, v), wall);
     if (auto it = crossings.find(key); it != crossings.end()) return it->second;
-    const int k = axis_of(wall);
-    const double bound = bound_of(wall);
+    const int k = wall == kProbe ? 0 : axis_of(wall);
+    const double bound = wall == kProbe ? 0 : bound_of(wall);
     Point3 x;
     std::uint8_t on = static_cast<std::uint8_t>(1u << wall);
     auto chord = chords.find(key_of(u, v));
@@ -339,15 +342,16 @@ struct Builder {
       const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
       const Conic_curve curve(trisector);
       double lo = c.first, hi = c.second;
-      const bool lo_outside = outside(points[std::min(u, v)], wall) > 0;
+      const Site_index s = edge.tie_set[0];  // on the edge every site of its tie set is as near
+      const bool lo_outside = outside(points[std::min(u, v)], wall, s) > 0;
       for (int i = 0; i < 200 && lo != hi; ++i) {
         const double mid = 0.5 * (lo + hi);
         if (mid == lo || mid == hi) break;
-        ((outside(curve.position(mid), wall) > 0) == lo_outside ? lo : hi) = mid;
+        ((outside(curve.position(mid), wall, s) > 0) == lo_outside ? lo : hi) = mid;
       }
       const double t = 0.5 * (lo + hi);
       x = curve.position(t);
-      x[k] = bound;
+      if (wall != kProbe) x[k] = bound;
       const std::uint32_t id = add_point(x, on);
       kinds[id] = 2;
       crossings[key] = id;
@@ -359,16 +363,16 @@ struct Builder {
     const Point2 pu = frame.project(points[u]), pv = frame.project(points[v]);
     // Along the chord's projection: the crossing of the sheet with the plane.
     double lo = 0, hi = 1;
-    const bool u_outside = outside(points[u], wall) > 0;
+    const bool u_outside = outside(points[u], wall, a) > 0;
     auto at = [&](double l) { return frame.lift({pu[0] + l * (pv[0] - pu[0]), pu[1] + l * (pv[1] - pu[1])}); };
     for (int i = 0; i < 200; ++i) {
       const double mid = 0.5 * (lo + hi);
       if (mid == lo || mid == hi) break;
-      ((outside(at(mid), wall) > 0) == u_outside ? lo : hi) = mid;
+      ((outside(at(mid), wall, a) > 0) == u_outside ? lo : hi) = mid;
     }
     Point2 p{pu[0] + 0.5 * (lo + hi) * (pv[0] - pu[0]), pu[1] + 0.5 * (lo + hi) * (pv[1] - pu[1])};
     int other = -1;
-    for (int w = 0; w < 6; ++w)
+    for (int w = 0; w < 6 && wall != kProbe; ++w)
       if ((common >> w) & 1u) other = w;
     if (other >= 0) {
       // Both ends on another wall: Newton in the plane for the point of the sheet on both walls.
@@ -392,7 +396,7 @@ struct Builder {
     } else {
       x = frame.lift(p);
     }
-    x[k] = bound;
+    if (wall != kProbe) x[k] = bound;
     const std::uint32_t id = add_point(x, on);
     crossings[key] = id;
     return id;
@@ -400,11 +404,12 @@ struct Builder {
 
   void cut_by_wall(int wall) {
     std::vector<Mesh_triangle> kept;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      if (outside(points[i], wall) == 0) walls[i] = static_cast<std::uint8_t>(walls[i] | (1u << wall));
+    if (wall != kProbe)
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (outside(points[i], wall) == 0) walls[i] = static_cast<std::uint8_t>(walls[i] | (1u << wall));
     for (const Mesh_triangle& t : triangles) {
       std::array<double, 3> s;
-      for (int k = 0; k < 3; ++k) s[k] = outside(points[t.vertices[k]], wall);
+      for (int k = 0; k < 3; ++k) s[k] = outside(points[t.vertices[k]], wall, static_cast<Site_index>(t.site_a));
       if (s[0] <= 0 && s[1] <= 0 && s[2] <= 0) {
         kept.push_back(t);
         continue;
@@ -437,27 +442,28 @@ struct Builder {
   // step to a crossing is dropped by every face on the edge alike.
 
   // The point of the sheet on the wall nearest p (Gauss-Newton in the plane).
-  Point3 onto_wall(const Bisector_frame& frame, Point2 p, int wall) const {
-    const int k = axis_of(wall);
-    const double bound = bound_of(wall);
+  Point3 onto_wall(const Bisector_frame& frame, Point2 p, int wall, Site_index a) const {
+    const int k = wall == kProbe ? 0 : axis_of(wall);
+    const double bound = wall == kProbe ? 0 : bound_of(wall);
     const double scale = std::max({1.0, std::abs(bound), std::hypot(p[0], p[1])});
+    auto level = [&](const Point3& y) { return wall == kProbe ? outside(y, kProbe, a) : y[k] - bound; };
     for (int i = 0; i < 40; ++i) {
       const Point3 y = frame.lift(p);
-      const double g = y[k] - bound;
+      const double g = level(y);
       if (std::abs(g) <= 1e-15 * scale) break;
       const double d = 1e-7 * scale;
-      const double gs = (frame.lift({p[0] + d, p[1]})[k] - y[k]) / d, gt = (frame.lift({p[0], p[1] + d})[k] - y[k]) / d;
+      const double gs = (level(frame.lift({p[0] + d, p[1]})) - g) / d, gt = (level(frame.lift({p[0], p[1] + d})) - g) / d;
       const double norm = gs * gs + gt * gt;
       if (norm == 0) break;
       p = {p[0] - g * gs / norm, p[1] - g * gt / norm};
     }
     Point3 x = frame.lift(p);
-    x[k] = bound;
+    if (wall != kProbe) x[k] = bound;
     return x;
   }
 
   static int lowest_wall(std::uint8_t bits) {
-    for (int w = 0; w < 6; ++w)
+    for (int w = 0; w <= kProbe; ++w)
       if ((bits >> w) & 1u) return w;
     return -1;
   }
@@ -564,7 +570,7 @@ struct Builder {
         const double f = (target - at_length[segment]) / (at_length[segment + 1] - at_length[segment]);
         const Point3 &p = points[chain[segment]], &q = points[chain[segment + 1]];
         const Point3 x{p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]), p[2] + f * (q[2] - p[2])};
-        const std::uint32_t id = add_point(onto_wall(frame, frame.project(x), wall), static_cast<std::uint8_t>(1u << wall));
+        const std::uint32_t id = add_point(onto_wall(frame, frame.project(x), wall, a), static_cast<std::uint8_t>(1u << wall));
         ids.push_back(id);
       }
       ids.push_back(chain.back());
@@ -591,8 +597,12 @@ struct Builder {
     }
     input.inside = [&](const Point2& p) {
       const Point3 x = frame.lift(p);
-      for (int k = 0; k < 3; ++k)
-        if (!(x[k] > box.lo[k] && x[k] < box.hi[k])) return false;
+      if (options.has_probe) {
+        if (!(outside(x, kProbe, a) < 0)) return false;
+      } else {
+        for (int k = 0; k < 3; ++k)
+          if (!(x[k] > box.lo[k] && x[k] < box.hi[k])) return false;
+      }
       return pair_nearest(a, b, x);
     };
     input.lift = [&frame](const Point2& p) { return frame.lift(p); };
@@ -672,6 +682,168 @@ struct Builder {
       triangles = std::move(kept);
       return;
     }
+  }
+
+  // ---- The probe spheres ---------------------------------------------------------------------------
+  // With --probe, cell i is cut by its ball of radius R = w_i + P and closed by the piece of that ball's
+  // sphere inside the cell, meshed in a stereographic chart from a point of the sphere outside the cell
+  // (or, when the whole sphere is inside, as a subdivided icosahedron).
+
+  void add_cap_triangle(std::array<std::uint32_t, 3> v, Site_index cell) {
+    const Site& c = sites[cell];
+    const Point3 &p = points[v[0]], &q = points[v[1]], &r = points[v[2]];
+    const Point3 u{q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w{r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const Point3 n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double out = n[0] * (p[0] - c.x) + n[1] * (p[1] - c.y) + n[2] * (p[2] - c.z);
+    if (out < 0) std::swap(v[1], v[2]);
+    Mesh_triangle t;
+    t.vertices = v;
+    t.site_a = -1 - kProbe;
+    t.site_b = static_cast<std::int32_t>(cell);
+    t.face_id = -1;
+    triangles.push_back(t);
+  }
+
+  void mesh_whole_sphere(Site_index cell, double radius) {
+    const Site& c = sites[cell];
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    std::vector<Point3> v{{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    std::vector<std::array<std::size_t, 3>> f{{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                              {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                              {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                              {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    for (Point3& x : v) {
+      const double l = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+      x = {x[0] / l, x[1] / l, x[2] / l};
+    }
+    // Halve every edge until the edges on the sphere are at most the step.
+    while (radius * 1.1071 / std::pow(2.0, 0) > step && f.size() < 2000000) {
+      const double edge = radius * distance(v[f[0][0]], v[f[0][1]]);
+      if (edge <= step) break;
+      std::map<std::pair<std::size_t, std::size_t>, std::size_t> middle;
+      auto mid = [&](std::size_t a, std::size_t b) {
+        auto [it, fresh] = middle.emplace(std::make_pair(std::min(a, b), std::max(a, b)), v.size());
+        if (fresh) {
+          Point3 m{(v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2};
+          const double l = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+          v.push_back({m[0] / l, m[1] / l, m[2] / l});
+        }
+        return it->second;
+      };
+      std::vector<std::array<std::size_t, 3>> finer;
+      for (const auto& t : f) {
+        const std::size_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+        finer.push_back({t[0], ab, ca});
+        finer.push_back({t[1], bc, ab});
+        finer.push_back({t[2], ca, bc});
+        finer.push_back({ab, bc, ca});
+      }
+      f = std::move(finer);
+    }
+    std::vector<std::uint32_t> ids;
+    for (const Point3& x : v)
+      ids.push_back(add_point({c.x + radius * x[0], c.y + radius * x[1], c.z + radius * x[2]},
+                              static_cast<std::uint8_t>(1u << kProbe)));
+    for (const auto& t : f) add_cap_triangle({ids[t[0]], ids[t[1]], ids[t[2]]}, cell);
+  }
+
+  void mesh_cap_of_cell(Site_index cell) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (const Mesh_triangle& t : triangles) {
+      if (t.is_wall() || (t.site_a != static_cast<std::int32_t>(cell) && t.site_b != static_cast<std::int32_t>(cell))) continue;
+      for (int k = 0; k < 3; ++k) ++uses[key_of(t.vertices[k], t.vertices[(k + 1) % 3])];
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> rims;
+    for (const auto& [edge, count] : uses) {
+      if (count != 1) continue;
+      if (!((walls[edge.first] & walls[edge.second]) >> kProbe & 1u)) {
+        ++statistics.open_rims;
+        continue;
+      }
+      rims.push_back(edge);
+    }
+    const Site& c = sites[cell];
+    const double radius = c.w + options.probe;
+    if (!(radius > 0)) return;
+    const Point3 centre{c.x, c.y, c.z};
+    auto on_sphere = [&](const Point3& u) { return Point3{c.x + radius * u[0], c.y + radius * u[1], c.z + radius * u[2]}; };
+    // The point of the sphere farthest outside the cell: the pole of the chart.
+    const double golden = kPi * (3 - std::sqrt(5.0));
+    Point3 pole{0, 0, 1};
+    double best = -std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 512; ++k) {
+      const double z = 1 - (2 * k + 1) / 512.0, r = std::sqrt(1 - z * z);
+      const Point3 u{r * std::cos(golden * k), r * std::sin(golden * k), z};
+      const Point3 x = on_sphere(u);
+      double margin = -std::numeric_limits<double>::infinity();
+      const double own = weighted_distance(x, c);
+      for (Site_index s : active_sites)
+        if (s != cell) margin = std::max(margin, own - weighted_distance(x, sites[s]));
+      if (margin > best) best = margin, pole = u;
+    }
+    if (rims.empty()) {
+      if (best < 0) mesh_whole_sphere(cell, radius);  // the whole sphere is in the cell
+      return;
+    }
+    // A right-handed frame (e1, e2, pole); the chart q = R (v.e1, v.e2) / (1 - v.pole), v the unit vector.
+    int m = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::abs(pole[i]) < std::abs(pole[m])) m = i;
+    Point3 e1{0, 0, 0};
+    e1[m] = 1;
+    const double along = e1[0] * pole[0] + e1[1] * pole[1] + e1[2] * pole[2];
+    e1 = {e1[0] - along * pole[0], e1[1] - along * pole[1], e1[2] - along * pole[2]};
+    const double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    e1 = {e1[0] / l1, e1[1] / l1, e1[2] / l1};
+    const Point3 e2{pole[1] * e1[2] - pole[2] * e1[1], pole[2] * e1[0] - pole[0] * e1[2], pole[0] * e1[1] - pole[1] * e1[0]};
+    auto chart = [&](const Point3& x) {
+      const Point3 v{(x[0] - c.x) / radius, (x[1] - c.y) / radius, (x[2] - c.z) / radius};
+      const double d = 1 - (v[0] * pole[0] + v[1] * pole[1] + v[2] * pole[2]);
+      return Point2{radius * (v[0] * e1[0] + v[1] * e1[1] + v[2] * e1[2]) / d,
+                    radius * (v[0] * e2[0] + v[1] * e2[1] + v[2] * e2[2]) / d};
+    };
+    auto lift = [&](const Point2& q) {
+      const double a = q[0] / radius, b = q[1] / radius, s2 = a * a + b * b;
+      Point3 v;
+      for (int k = 0; k < 3; ++k) v[k] = (2 * (a * e1[k] + b * e2[k]) + (s2 - 1) * pole[k]) / (s2 + 1);
+      return on_sphere(v);
+    };
+    Plane_mesh_input input;
+    for (const auto& [u, v] : rims) {
+      Plane_mesh_input::Polyline line;
+      for (std::uint32_t id : {u, v}) {
+        line.points.push_back(chart(points[id]));
+        line.ids.push_back(id);
+      }
+      input.polylines.push_back(std::move(line));
+    }
+    // The rims bound the cap, and the pole is outside it: the cap is the odd-parity side of the rims.
+    std::vector<std::pair<Point2, Point2>> segments;
+    for (const auto& line : input.polylines) segments.push_back({line.points[0], line.points[1]});
+    input.inside = [&segments](const Point2& p) {
+      bool odd = false;
+      for (const auto& [u, v] : segments)
+        if ((u[1] > p[1]) != (v[1] > p[1]) && p[0] < u[0] + (p[1] - u[1]) * (v[0] - u[0]) / (v[1] - u[1])) odd = !odd;
+      return odd;
+    };
+    input.lift = lift;
+    input.density = [&](const Point2& q) {
+      const double s2 = (q[0] * q[0] + q[1] * q[1]) / (radius * radius), f = 2 / (1 + s2);
+      return f * f;
+    };
+    input.segment_label = [](std::int64_t, std::int64_t) -> std::int64_t { return -1; };
+    input.step = step;
+    input.lloyd_iterations = options.lloyd_iterations;
+    const Plane_mesh_output output = mesh_plane_region(input);
+    const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+    for (const Point3& x : output.new_points) add_point(x, static_cast<std::uint8_t>(1u << kProbe));
+    for (const auto& tri : output.triangles) {
+      std::array<std::uint32_t, 3> v;
+      for (int i = 0; i < 3; ++i) v[i] = tri[i] >= 0 ? static_cast<std::uint32_t>(tri[i]) : base + static_cast<std::uint32_t>(-1 - tri[i]);
+      add_cap_triangle(v, cell);
+    }
+    (void)centre;
   }
 
   // ---- The walls -----------------------------------------------------------------------------------
@@ -811,14 +983,18 @@ struct Builder {
     polylines.assign(topology.edges.size(), {});
     mesh_faces();
     const auto start = Clock::now();
-    for (int wall = 0; wall < 6; ++wall) cut_by_wall(wall);
-    make_corners();
+    if (options.has_probe) {
+      cut_by_wall(kProbe);
+    } else {
+      for (int wall = 0; wall < 6; ++wall) cut_by_wall(wall);
+      make_corners();
+    }
     std::vector<Site_index> cells = options.sites;
     if (cells.empty())
       for (const Diagram_cell& c : topology.cells) cells.push_back(c.site);
     auto close_cells = [&] {
       for (Site_index cell : cells)
-        if (active[cell]) mesh_walls_of_cell(cell);
+        if (active[cell]) options.has_probe ? mesh_cap_of_cell(cell) : mesh_walls_of_cell(cell);
     };
     if (options.remesh_cut_faces) {
       // Meshing the cut faces again is checked face by face; should a cell still come out open, the cut
@@ -887,7 +1063,12 @@ Axis_box default_mesh_box(const std::vector<Site>& sites, const Diagram& diagram
 
 Diagram_mesh mesh_diagram(const std::vector<Site>& sites, const Diagram_topology& topology, const Mesh_options& options) {
   Builder builder(sites, topology, options);
+  if (options.has_probe && options.has_box) throw std::invalid_argument("mesh: a box or a probe, not both");
+  if (options.has_probe && !(options.probe >= 0 && std::isfinite(options.probe)))
+    throw std::invalid_argument("mesh: the probe must be a finite number >= 0");
   builder.box = options.has_box ? options.box : default_mesh_box(sites, topology.vertices);
+  if (options.has_probe)  // the region meshed: every probe-expanded ball
+    for (int k = 0; k < 3; ++k) builder.box.lo[k] -= options.probe, builder.box.hi[k] += options.probe;
   const double diagonal = distance(Point3{builder.box.lo[0], builder.box.lo[1], builder.box.lo[2]},
                                    Point3{builder.box.hi[0], builder.box.hi[1], builder.box.hi[2]});
   builder.step = options.step > 0 ? options.step : 0.02 * diagonal;

@@ -19,9 +19,9 @@
 namespace apollonius {
 
 // A triangle of a face (site_a < site_b, both sites; face_id the topology's face) or of a wall: the piece
-// of the box wall `wall` (0..5: x = lo, x = hi, y = lo, y = hi, z = lo, z = hi) inside the cell of site_b,
-// with site_a = -1 - wall and face_id = -1. Orientation: a face's normal points from site_a's cell into
-// site_b's; a wall's out of the box.
+// of the box wall `wall` (0..5: x = lo, x = hi, y = lo, y = hi, z = lo, z = hi; 6: with a probe, the sphere
+// of radius w + P about site_b) inside the cell of site_b, with site_a = -1 - wall and face_id = -1.
+// Orientation: a face's normal points from site_a's cell into site_b's; a wall's out of the box (or ball).
 struct Mesh_triangle {
   std::array<std::uint32_t, 3> vertices;
   std::int32_t site_a, site_b;
@@ -49,6 +49,8 @@ struct Mesh_options {
   double step = 0;                   // 0: 2% of the box's diagonal
   bool has_box = false;              // else the sites' bounding box grown by their largest weight
   Axis_box box{};
+  bool has_probe = false;            // cut by the probe-expanded balls instead of a box (not with has_box)
+  double probe = 1.4;                // P >= 0: face (i, j) where d_i <= P, closed by the spheres w_i + P
   std::vector<Site_index> sites;     // the cells to mesh (ascending); empty: every cell
   int lloyd_iterations = 20;
   bool remesh_cut_faces = true;  // cut faces meshed again from their new boundary (no slivers at walls)

@@ -123,6 +123,8 @@ TEST_CASE("mesh: bad input and bad parameters exit 2 and write nothing") {
            {"--sites", "5"},
            {"--sites", "-1"},
            {"--lloyd", "-1"},
+           {"--probe", "-1"},
+           {"--probe", "1", "--box", "0", "0", "0", "1", "1", "1"},
        }) {
     std::vector<std::string> command{"mesh", balls, "-o", out};
     command.insert(command.end(), args.begin(), args.end());

@@ -272,3 +272,60 @@ TEST_CASE("measure_cells against the mesh volumes (known disagreement)" * doctes
     CHECK(std::abs(c.volume - exact[cell.site].volume) <= 0.05 * mesh.step * c.area);
   }
 }
+
+TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius w + P") {
+  for (std::uint64_t seed = 31; seed <= 36; ++seed) {
+    const std::size_t n = 4 + seed % 5;
+    const std::vector<Site> sites = random_sites(seed, n, 0.25);
+    const Diagram_topology topology = topology_of(sites);
+    Mesh_options options;
+    options.step = 0.05;
+    options.lloyd_iterations = 3;
+    options.has_probe = true;
+    options.probe = 0.15;
+    const Diagram_mesh mesh = mesh_diagram(sites, topology, options);
+    CAPTURE(seed);
+    REQUIRE(!mesh.triangles.empty());
+    CHECK(mesh.statistics.open_rims == 0);
+    double scale = 0;
+    for (const Site& s : sites) scale = std::max({scale, std::abs(s.x), std::abs(s.y), std::abs(s.z), std::abs(s.w)});
+    std::size_t off = 0;
+    for (const Mesh_triangle& t : mesh.triangles)
+      for (std::uint32_t v : t.vertices) {
+        const Point3& x = mesh.points[v];
+        if (t.is_wall()) {
+          CHECK(t.site_a == -7);
+          const Site& c = sites[t.site_b];
+          if (std::abs(distance(x, {c.x, c.y, c.z}) - c.w - options.probe) > 1e-12 * scale) ++off;
+        } else {
+          const double da = weighted_distance(x, sites[t.site_a]), db = weighted_distance(x, sites[t.site_b]);
+          if (std::abs(da - db) > 1e-12 * scale || da > options.probe + 1e-12 * scale) ++off;
+        }
+      }
+    CHECK(off == 0);
+    // Monte Carlo: points of the box nearest to the cell's site and within its ball.
+    std::vector<double> hits(sites.size(), 0);
+    const int samples = 200000;
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int k = 0; k < samples; ++k) {
+      Point3 x;
+      for (int a = 0; a < 3; ++a) x[a] = mesh.box.lo[a] + (mesh.box.hi[a] - mesh.box.lo[a]) * unit(random);
+      Site_index best = topology.cells.front().site;
+      for (const Diagram_cell& c : topology.cells)
+        if (weighted_distance(x, sites[c.site]) < weighted_distance(x, sites[best])) best = c.site;
+      if (weighted_distance(x, sites[best]) <= options.probe) hits[best] += 1;
+    }
+    for (const Diagram_cell& cell : topology.cells) {
+      CAPTURE(cell.site);
+      const auto triangles = cell_triangles(mesh, cell.site);
+      REQUIRE(!triangles.empty());
+      const Cell_check c = check_cell(mesh, triangles);
+      CHECK(c.closed);
+      CHECK(!self_intersects(mesh, triangles));
+      const double fraction = hits[cell.site] / samples, volume = box_volume(mesh.box);
+      const double sigma = volume * std::sqrt(fraction * (1 - fraction) / samples);
+      CHECK(std::abs(c.volume - fraction * volume) <= 5 * sigma + 0.05 * mesh.step * c.area);
+    }
+  }
+}
