@@ -954,7 +954,10 @@ struct Builder {
   }
 
   // Whether each cell's triangles use every edge twice.
-  bool every_cell_closed(const std::vector<Site_index>& cells) const {
+  bool every_cell_closed(const std::vector<Site_index>& cells) const { return open_cells(cells) == 0; }
+
+  // How many of the cells have an edge not used twice by their triangles.
+  std::size_t open_cells(const std::vector<Site_index>& cells) const {
     std::map<std::int32_t, std::map<std::pair<std::uint32_t, std::uint32_t>, int>> uses;
     std::vector<bool> wanted(sites.size(), false);
     for (Site_index c : cells) wanted[c] = true;
@@ -962,10 +965,14 @@ struct Builder {
       for (std::int32_t c : {t.site_a, t.site_b})
         if (c >= 0 && wanted[static_cast<std::size_t>(c)])
           for (int k = 0; k < 3; ++k) ++uses[c][key_of(t.vertices[k], t.vertices[(k + 1) % 3])];
+    std::size_t open = 0;
     for (const auto& [cell, edges] : uses)
       for (const auto& [edge, n] : edges)
-        if (n != 2) return false;
-    return true;
+        if (n != 2) {
+          ++open;
+          break;
+        }
+    return open;
   }
 
   Diagram_mesh run() {
@@ -1016,6 +1023,7 @@ struct Builder {
     } else {
       close_cells();
     }
+    statistics.open_cells = open_cells(cells);
     statistics.cut_seconds = seconds_since(start);
     // Keep the points in use, in order.
     std::vector<std::int64_t> renumber(points.size(), -1);
