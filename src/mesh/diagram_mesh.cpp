@@ -718,9 +718,7 @@ struct Builder {
       x = {x[0] / l, x[1] / l, x[2] / l};
     }
     // Halve every edge until the edges on the sphere are at most the step.
-    while (radius * 1.1071 / std::pow(2.0, 0) > step && f.size() < 2000000) {
-      const double edge = radius * distance(v[f[0][0]], v[f[0][1]]);
-      if (edge <= step) break;
+    while (radius * distance(v[f[0][0]], v[f[0][1]]) > step && f.size() < 2000000) {
       std::map<std::pair<std::size_t, std::size_t>, std::size_t> middle;
       auto mid = [&](std::size_t a, std::size_t b) {
         auto [it, fresh] = middle.emplace(std::make_pair(std::min(a, b), std::max(a, b)), v.size());
@@ -766,7 +764,6 @@ struct Builder {
     const Site& c = sites[cell];
     const double radius = c.w + options.probe;
     if (!(radius > 0)) return;
-    const Point3 centre{c.x, c.y, c.z};
     auto on_sphere = [&](const Point3& u) { return Point3{c.x + radius * u[0], c.y + radius * u[1], c.z + radius * u[2]}; };
     // The point of the sphere farthest outside the cell: the pole of the chart.
     const double golden = kPi * (3 - std::sqrt(5.0));
@@ -843,7 +840,6 @@ struct Builder {
       for (int i = 0; i < 3; ++i) v[i] = tri[i] >= 0 ? static_cast<std::uint32_t>(tri[i]) : base + static_cast<std::uint32_t>(-1 - tri[i]);
       add_cap_triangle(v, cell);
     }
-    (void)centre;
   }
 
   // ---- The walls -----------------------------------------------------------------------------------
