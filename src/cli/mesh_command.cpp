@@ -95,7 +95,7 @@ int run(const Mesh_command& command, std::ostream& out, std::ostream& err) {
   if (command.stats) {
     const Mesh_statistics& s = mesh.statistics;
     err << "mesh count\npoints " << mesh.points.size() << "\ntriangles " << mesh.triangles.size() << "\nfaces_meshed "
-        << s.faces_meshed << "\nedge_samples " << s.edge_samples << "\nopen_rims " << s.open_rims << "\nfaces_not_remeshed " << s.faces_not_remeshed << "\nremesh_abandoned " << s.remesh_abandoned << "\nstep "
+        << s.faces_meshed << "\nedge_samples " << s.edge_samples << "\nopen_rims " << s.open_rims << "\nfaces_not_remeshed " << s.faces_not_remeshed << "\nremesh_abandoned " << s.remesh_abandoned << "\nopen_cells " << s.open_cells << "\nstep "
         << round_trip(mesh.step) << "\nmesh seconds\ndiagram " << std::chrono::duration<double>(after_diagram - start).count()
         << "\nsampling " << s.sampling_seconds << "\nfaces " << s.faces_seconds << "\ncut " << s.cut_seconds << "\ntotal "
         << std::chrono::duration<double>(end - start).count() << '\n';

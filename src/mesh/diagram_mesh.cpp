@@ -718,9 +718,7 @@ struct Builder {
       x = {x[0] / l, x[1] / l, x[2] / l};
     }
     // Halve every edge until the edges on the sphere are at most the step.
-    while (radius * 1.1071 / std::pow(2.0, 0) > step && f.size() < 2000000) {
-      const double edge = radius * distance(v[f[0][0]], v[f[0][1]]);
-      if (edge <= step) break;
+    while (radius * distance(v[f[0][0]], v[f[0][1]]) > step && f.size() < 2000000) {
       std::map<std::pair<std::size_t, std::size_t>, std::size_t> middle;
       auto mid = [&](std::size_t a, std::size_t b) {
         auto [it, fresh] = middle.emplace(std::make_pair(std::min(a, b), std::max(a, b)), v.size());
@@ -766,7 +764,6 @@ struct Builder {
     const Site& c = sites[cell];
     const double radius = c.w + options.probe;
     if (!(radius > 0)) return;
-    const Point3 centre{c.x, c.y, c.z};
     auto on_sphere = [&](const Point3& u) { return Point3{c.x + radius * u[0], c.y + radius * u[1], c.z + radius * u[2]}; };
     // The point of the sphere farthest outside the cell: the pole of the chart.
     const double golden = kPi * (3 - std::sqrt(5.0));
@@ -843,7 +840,6 @@ struct Builder {
       for (int i = 0; i < 3; ++i) v[i] = tri[i] >= 0 ? static_cast<std::uint32_t>(tri[i]) : base + static_cast<std::uint32_t>(-1 - tri[i]);
       add_cap_triangle(v, cell);
     }
-    (void)centre;
   }
 
   // ---- The walls -----------------------------------------------------------------------------------
@@ -954,7 +950,10 @@ struct Builder {
   }
 
   // Whether each cell's triangles use every edge twice.
-  bool every_cell_closed(const std::vector<Site_index>& cells) const {
+  bool every_cell_closed(const std::vector<Site_index>& cells) const { return open_cells(cells) == 0; }
+
+  // How many of the cells have an edge not used twice by their triangles.
+  std::size_t open_cells(const std::vector<Site_index>& cells) const {
     std::map<std::int32_t, std::map<std::pair<std::uint32_t, std::uint32_t>, int>> uses;
     std::vector<bool> wanted(sites.size(), false);
     for (Site_index c : cells) wanted[c] = true;
@@ -962,10 +961,14 @@ struct Builder {
       for (std::int32_t c : {t.site_a, t.site_b})
         if (c >= 0 && wanted[static_cast<std::size_t>(c)])
           for (int k = 0; k < 3; ++k) ++uses[c][key_of(t.vertices[k], t.vertices[(k + 1) % 3])];
+    std::size_t open = 0;
     for (const auto& [cell, edges] : uses)
       for (const auto& [edge, n] : edges)
-        if (n != 2) return false;
-    return true;
+        if (n != 2) {
+          ++open;
+          break;
+        }
+    return open;
   }
 
   Diagram_mesh run() {
@@ -1016,6 +1019,7 @@ struct Builder {
     } else {
       close_cells();
     }
+    statistics.open_cells = open_cells(cells);
     statistics.cut_seconds = seconds_since(start);
     // Keep the points in use, in order.
     std::vector<std::int64_t> renumber(points.size(), -1);

@@ -34,6 +34,7 @@ struct Mesh_statistics {
   std::size_t open_rims = 0;  // cut edges of a cell found on no wall (0 when every cell mesh closed)
   std::size_t faces_not_remeshed = 0;  // cut faces whose boundary did not allow meshing them again
   bool remesh_abandoned = false;       // some cell came out open after meshing cut faces again
+  std::size_t open_cells = 0;          // cells whose mesh is not closed in the end (0 expected)
   double sampling_seconds = 0, faces_seconds = 0, cut_seconds = 0;
 };
 

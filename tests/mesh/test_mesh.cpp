@@ -109,6 +109,7 @@ void check_mesh(const std::vector<Site>& sites, const Diagram_mesh& mesh, const 
   CAPTURE(name);
   REQUIRE(!mesh.triangles.empty());
   CHECK(mesh.statistics.open_rims == 0);
+  CHECK(mesh.statistics.open_cells == 0);
   double scale = 0;
   for (const Site& s : sites) scale = std::max({scale, std::abs(s.x), std::abs(s.y), std::abs(s.z), std::abs(s.w)});
   std::vector<bool> hidden(sites.size(), false);
@@ -287,6 +288,7 @@ TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius
     CAPTURE(seed);
     REQUIRE(!mesh.triangles.empty());
     CHECK(mesh.statistics.open_rims == 0);
+    CHECK(mesh.statistics.open_cells == 0);
     double scale = 0;
     for (const Site& s : sites) scale = std::max({scale, std::abs(s.x), std::abs(s.y), std::abs(s.z), std::abs(s.w)});
     std::size_t off = 0;
