@@ -371,7 +371,7 @@ class Cell_integrator {
 
   // ---- integrands ----
 
-  // Adds the integrands at a of line l, times weight, into v; the exit is `exit`, or the least when -1.
+  // Adds the integrands at a of line l, times weight, into v; the exit is x, or the least when null.
   // Returns the cut that is the exit (kPlane, kSphere otherwise) and sets derivative to weight tau^2 d tau / d alpha.
   int add_node(const Face_line& l, double a, const Line_exit* x, double weight, Values& v, double& derivative) {
     const Vector3 p = l.at(a);
