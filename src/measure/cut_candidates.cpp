@@ -43,14 +43,25 @@ Cut_candidates cut_candidates(const std::vector<Site>& sites, const std::vector<
   std::vector<bool> chosen(sites.size(), false);
   for (Site_index j : proposed)
     if (j != i && active[j]) chosen[j] = true;
+  // The others by increasing gap: a cut is never nearer than half its gap (t = c / (2 (alpha - u.D)) >=
+  // c / (2 (alpha + |D|)) = gap / 2), so once half the gap, lowered by twice the margin (rounding), is
+  // beyond every face's reach and clearance, no later site is within reach or lowers a clearance: the
+  // result is the one the per-face bounds of every site would give, at O(n log n) instead of 6n bounds.
+  std::vector<Radial_cut> others;
   for (Site_index j = 0; j < sites.size(); ++j) {
     if (j == i || !active[j]) continue;
     const Radial_cut cut = Radial_cut::between(s, sites[j], j);
-    if (chosen[j]) {
+    if (chosen[j])
       result.cuts.push_back(cut);
-      continue;
-    }
-    if (cut.gap > 2 * farthest * (1 + kClearanceMargin)) continue;  // beats i nowhere in the box
+    else if (cut.gap <= 2 * farthest * (1 + kClearanceMargin))  // else it beats i nowhere in the box
+      others.push_back(cut);
+  }
+  std::sort(others.begin(), others.end(), [](const Radial_cut& x, const Radial_cut& y) { return x.gap < y.gap; });
+  const double reach_max = *std::max_element(reach.begin(), reach.end());
+  for (const Radial_cut& cut : others) {
+    const double floor = 0.5 * cut.gap * (1 - 2 * kClearanceMargin);
+    const double clearance_max = *std::max_element(result.clearance.begin(), result.clearance.end());
+    if (floor > reach_max && floor >= clearance_max) break;
     std::array<double, 6> nearest;
     bool within_reach = false;
     for (int f = 0; f < 6; ++f) {
@@ -63,6 +74,8 @@ Cut_candidates cut_candidates(const std::vector<Site>& sites, const std::vector<
       for (int f = 0; f < 6; ++f) result.clearance[f] = std::min(result.clearance[f], nearest[f]);
     }
   }
+  // In site order, as the callers expect of the proposal's order.
+  std::sort(result.cuts.begin(), result.cuts.end(), [](const Radial_cut& x, const Radial_cut& y) { return x.site < y.site; });
   return result;
 }
 
