@@ -12,6 +12,10 @@
 // symmetric in the three sites (Heron's form: positive iff the square roots of the gaps make a triangle).
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
+#include "predicates/number_types.h"
 #include "predicates/quadruple_line.h"
 #include "predicates/site.h"
 
@@ -29,5 +33,34 @@ NT rows_gram_determinant(const NT& ab, const NT& ac, const NT& bc) {
   const NT s = ab + ac - bc;
   return NT(4) * ab * ac - s * s;
 }
+
+}  // namespace apollonius
+
+namespace apollonius {
+
+// The power gaps of a few sites, pairwise, in intervals: whether three of them may have a closed
+// trisector (an ellipse or a point), or certainly not (a positive Gram determinant). Needs the rounding
+// mode of Rounding_guard while in use.
+class Pairwise_gaps {
+ public:
+  void assign(const std::vector<Site>& sites, const Site_index* set, std::size_t size) {
+    size_ = size;
+    gaps_.resize(size_ * size_);
+    for (std::size_t x = 0; x < size_; ++x)
+      for (std::size_t y = x + 1; y < size_; ++y) gaps_[x * size_ + y] = power_gap<Interval>(sites[set[x]], sites[set[y]]);
+  }
+  template <class Set>
+  void assign(const std::vector<Site>& sites, const Set& set) {
+    assign(sites, set.data(), set.size());
+  }
+  // Positions i < j < k in the set.
+  bool maybe_closed(std::size_t i, std::size_t j, std::size_t k) const {
+    return !(rows_gram_determinant(gaps_[i * size_ + j], gaps_[i * size_ + k], gaps_[j * size_ + k]).inf() > 0);
+  }
+
+ private:
+  std::size_t size_ = 0;
+  std::vector<Interval> gaps_;  // of i < j at i * size_ + j
+};
 
 }  // namespace apollonius

@@ -133,7 +133,9 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
     keep_undominated(box, first, end);
   const std::size_t kept = stack_.size() - end;
   const auto record = [&] {
-    if (regions_ == nullptr || kept < 2) return;
+    if (regions_ == nullptr || kept < 2 ||
+        !region_box_needed(sites_, stack_.data() + end, stack_.data() + stack_.size(), *escapes_))
+      return;
     regions_->emplace_back();
     regions_->back().box = box;
     Octree_regions::Sites& sites = regions_->back().sites;

@@ -49,8 +49,12 @@ class Box_refinement {
 
   Refinement_counts counts() const;
 
-  // Records every box that ends refinement with 2 or more candidates, with them (octree_diagram.h).
-  void record_regions(std::vector<Octree_regions::Box>* regions) { regions_ = regions; }
+  // Records every box that ends refinement with 2 or more candidates, with them, when they hold two sites
+  // that `escapes` marks or three whose trisector may be closed (octree_diagram.h, Octree_regions).
+  void record_regions(std::vector<Octree_regions::Box>* regions, const std::vector<bool>* escapes) {
+    regions_ = regions;
+    escapes_ = escapes;
+  }
 
  private:
   // Refines the box whose candidates are stack_[first, stack_.size()).
@@ -82,6 +86,7 @@ class Box_refinement {
   Quadruple_cache<Kernel> cache_;
   Refinement_counts counts_;
   std::vector<Octree_regions::Box>* regions_ = nullptr;
+  const std::vector<bool>* escapes_ = nullptr;
   // The last point found by classify_tie, with every site known to tie there (ascending).
   std::vector<Vertex> tie_point_;  // empty or one
   std::vector<Site_index> tied_at_point_;

@@ -14,6 +14,8 @@
 #include "octree/candidate_propagation.h"
 #include "octree/far_field.h"
 #include "predicates/kernels.h"
+#include "predicates/rounding_guard.h"
+#include "predicates/trisector_rows.h"
 #include "diagram/scale_normalization.h"
 #include "octree/seed_partition.h"
 #include "diagram/site_set.h"
@@ -52,6 +54,25 @@ void unscale_regions(Octree_regions& regions, int exponent) {
   unscale(regions.root);
   for (Octree_regions::Box& b : regions.boxes) unscale(b.box);
 }
+
+}  // namespace
+
+bool region_box_needed(const std::vector<Site>& sites, const Site_index* first, const Site_index* last,
+                       const std::vector<bool>& escapes) {
+  if (std::count_if(first, last, [&](Site_index s) { return escapes[s]; }) >= 2) return true;
+  const std::size_t size = static_cast<std::size_t>(last - first);
+  if (size < 3) return false;
+  Rounding_guard guard;
+  thread_local Pairwise_gaps gaps;
+  gaps.assign(sites, first, size);
+  for (std::size_t i = 0; i < size; ++i)
+    for (std::size_t j = i + 1; j < size; ++j)
+      for (std::size_t k = j + 1; k < size; ++k)
+        if (gaps.maybe_closed(i, j, k)) return true;
+  return false;
+}
+
+namespace {
 
 template <class Kernel>
 Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_options& options) {
@@ -104,20 +125,26 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     // Per seed box, as the vertices: one list per thread would grow to millions of boxes, and each of its
     // reallocations would move them all at once.
     std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
+    std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
+    if (options.regions != nullptr)
+      for (Site_index s : escaping) escapes[s] = true;
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
       throw_if_cancelled(options.cancellation);
       Box_refinement<Kernel>& local = refinement.local();
-      if (options.regions != nullptr) local.record_regions(&seed_regions[k]);
+      if (options.regions != nullptr) local.record_regions(&seed_regions[k], &escapes);
       local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
     });
     if (options.regions != nullptr) {
       Octree_regions& r = *options.regions;
       r = {};
+      r.has_octree = true;
       r.root = partition.root_box();
       for (std::size_t id = 0; id < partition.id_count(); ++id) {
         if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
-        if (partition.is_box(id) && candidates[id].size() >= 2 && candidates[id].size() < 4)
-          r.boxes.push_back({partition.box(id), Octree_regions::Sites(candidates[id].begin(), candidates[id].end())});
+        const std::vector<Site_index>& c = candidates[id];
+        if (partition.is_box(id) && c.size() >= 2 && c.size() < 4 &&
+            region_box_needed(sites, c.data(), c.data() + c.size(), escapes))
+          r.boxes.push_back({partition.box(id), Octree_regions::Sites(c.begin(), c.end())});
       }
       move_concatenated(seed_regions, r.boxes, options.cancellation);
       // The boxes are disjoint: their lower corners order them, whatever the threads did.

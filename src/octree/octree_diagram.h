@@ -43,8 +43,10 @@ enum class Arithmetic { certified, floating };
 
 // The regions the octree settled and the sites that may own their points: where the whole diagram looks
 // for the curves and sheets with no vertex (topology/vertex_free.h). Every point of the root box R lies in
-// some box, whose sites include its owners (the completeness argument above); every point outside R is
-// owned by escaping sites.
+// some box of the octree, whose sites include its owners (the completeness argument above); every point
+// outside R is owned by escaping sites. Only the boxes where such a part may be found are kept: those
+// with two escaping sites or three whose trisector may be closed (predicates/trisector_rows.h), a sixth
+// of them on a protein.
 struct Octree_regions {
   // Inline up to a leaf's candidates: a large input has millions of boxes, and allocating (and, on Ctrl-C,
   // freeing) a vector for each took a large part of the whole diagram's time.
@@ -53,11 +55,19 @@ struct Octree_regions {
     Axis_box box;
     Sites sites;  // ascending, 2 or more
   };
-  std::vector<Box> boxes;  // the boxes with 2 or more sites, tiling R with those of 0 or 1
+  // Of the boxes of the octree with 2 or more sites (which tile R with those of 0 or 1), those whose sites
+  // hold two escaping ones or three that may have a closed trisector; ordered by lower corner.
+  std::vector<Box> boxes;
+  bool has_octree = false;  // false: no box at all, every active site escapes (fewer than 4 active sites)
   Axis_box root;
   std::vector<Site_index> escaping;               // ascending
   std::vector<std::vector<Site_index>> far_sets;  // the far field's patches' sites (far_field.h), 2 or more
 };
+
+// Whether a box of the octree with the sites [first, last) (2 or more) is kept in Octree_regions::boxes:
+// two of them escape, or three may have a closed trisector (decided in intervals; certain when it says no).
+bool region_box_needed(const std::vector<Site>& sites, const Site_index* first, const Site_index* last,
+                       const std::vector<bool>& escapes);
 
 struct Octree_options {
   int threads = 1;

@@ -111,7 +111,7 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const std::vector<Site>
     return in ? 1 : out ? 0 : -1;
   };
   std::optional<Site_range> test;
-  const int in_root = regions.boxes.empty() ? 0 : inside(regions.root);
+  const int in_root = regions.has_octree ? inside(regions.root) : 0;
   if (in_root < 0) return Filtered_outcome::undecided;
   if (in_root == 1) {
     for (std::size_t b : seen.boxes) {
@@ -206,19 +206,14 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   // So a triple that does not all escape can only be an ellipse, which it is not when its rows' Gram
   // determinant is certainly positive (trisector_rows.h, in intervals from the box's pairwise power gaps):
   // such a triple is left out before the occurrences are sorted. On 1j3h 95% of the occurrences go.
-  std::vector<Interval> gaps;  // of the box's sites i < j, at i * size + j
+  Pairwise_gaps gaps;
   const auto note = [&](const auto& set, std::size_t box) {
     throw_if_cancelled(cancellation);
     const std::size_t size = set.size();
     bool gaps_known = false;
     const auto maybe_closed = [&](std::size_t i, std::size_t j, std::size_t k) {
-      if (!gaps_known) {
-        gaps.resize(size * size);
-        for (std::size_t x = 0; x < size; ++x)
-          for (std::size_t y = x + 1; y < size; ++y) gaps[x * size + y] = power_gap<Interval>(sites[set[x]], sites[set[y]]);
-        gaps_known = true;
-      }
-      return !(rows_gram_determinant(gaps[i * size + j], gaps[i * size + k], gaps[j * size + k]).inf() > 0);
+      if (!gaps_known) gaps.assign(sites, set), gaps_known = true;
+      return gaps.maybe_closed(i, j, k);
     };
     for (std::size_t i = 0; i < size; ++i)
       for (std::size_t j = i + 1; j < size; ++j) {
@@ -268,7 +263,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   });
 
   const auto in_root = [&](const Curve_point& w) {
-    return regions.boxes.size() > 0 && curve_point_in_box(w, regions.root);
+    return regions.has_octree && curve_point_in_box(w, regions.root);
   };
   // Each candidate's test is independent: in parallel, each into its own slot. (Pointers: few candidates
   // are edges, and a million empty edges took a fifth of a second to allocate.)
@@ -336,7 +331,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
         test = range_of(regions.boxes[box].sites);
         break;
       }
-    if (!test && regions.boxes.empty() && seen.far) test = range_of(regions.escaping);  // no octree box: all escape
+    if (!test && !regions.has_octree && seen.far) test = range_of(regions.escaping);  // no octree: all escape
     if (!test) continue;
     const std::optional<std::vector<Site_index>> tie = tie_at({pair.first, pair.second}, *test, [&](Site_index s) {
       return axis_point_conflict(a, b, sites[s]);

@@ -14,6 +14,9 @@
 //    of escaping sites, are tested. A triple that does not all escape is left out as soon as its
 //    trisector is certainly no ellipse (trisector_rows.h: the rows' Gram determinant, in intervals, is
 //    positive); the others go on to the exact classification.
+// The octree keeps only the boxes that hold two escaping sites or three that may have a closed trisector
+// (Octree_regions): a box that holds the tie set of a vertex-free part is among them, by the last point
+// (its sites are escaping, or an ellipse's), so the candidates and the box that contains W are unchanged.
 // Cost: O(k^3) triples per box of k sites, each one interval test unless its sites all escape; those kept
 // are sorted and grouped; each candidate with no vertex costs one classification, and those that pass the
 // escaping test one witness, filtered, tested in parallel with `threads`.
