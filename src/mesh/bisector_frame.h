@@ -8,12 +8,29 @@
 
 #include <array>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "predicates/site.h"
 
 namespace apollonius {
 
 using Point3 = std::array<double, 3>;
+
+// Two unit vectors (u1, u2) with (u1, u2, n) orthonormal and right-handed, n a unit vector: u1 is the axis
+// direction least aligned with n, made orthogonal to it; u2 = n x u1.
+inline std::pair<Point3, Point3> orthonormal_complement(const Point3& n) {
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(n[i]) < std::abs(n[k])) k = i;
+  Point3 u1{0, 0, 0};
+  u1[k] = 1;
+  const double along = n[k];
+  u1 = {u1[0] - along * n[0], u1[1] - along * n[1], u1[2] - along * n[2]};
+  const double length = std::sqrt(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
+  u1 = {u1[0] / length, u1[1] / length, u1[2] / length};
+  return {u1, {n[1] * u1[2] - n[2] * u1[1], n[2] * u1[0] - n[0] * u1[2], n[0] * u1[1] - n[1] * u1[0]}};
+}
 
 // Invariant: u1, u2, n orthonormal and right-handed; D > |w_a - w_b| (the sites do not hide each other).
 struct Bisector_frame {
@@ -26,17 +43,7 @@ struct Bisector_frame {
     const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     n = {d[0] / length, d[1] / length, d[2] / length};
     middle = {(a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2};
-    // u1: the axis direction least aligned with n, made orthogonal to it.
-    int k = 0;
-    for (int i = 1; i < 3; ++i)
-      if (std::abs(n[i]) < std::abs(n[k])) k = i;
-    Point3 e{0, 0, 0};
-    e[k] = 1;
-    const double along = e[0] * n[0] + e[1] * n[1] + e[2] * n[2];
-    u1 = {e[0] - along * n[0], e[1] - along * n[1], e[2] - along * n[2]};
-    const double l1 = std::sqrt(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
-    u1 = {u1[0] / l1, u1[1] / l1, u1[2] / l1};
-    u2 = {n[1] * u1[2] - n[2] * u1[1], n[2] * u1[0] - n[0] * u1[2], n[0] * u1[1] - n[1] * u1[0]};
+    std::tie(u1, u2) = orthonormal_complement(n);
     half_distance = length / 2;
     half_weight_step = (a.w - b.w) / 2;
     // f^2 - delta^2 = (f - |delta|)(f + |delta|): no cancellation when the sites nearly hide each other.

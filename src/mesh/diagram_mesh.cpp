@@ -784,16 +784,8 @@ struct Builder {
       return;
     }
     // A right-handed frame (e1, e2, pole); the chart q = R (v.e1, v.e2) / (1 - v.pole), v the unit vector.
-    int m = 0;
-    for (int i = 1; i < 3; ++i)
-      if (std::abs(pole[i]) < std::abs(pole[m])) m = i;
-    Point3 e1{0, 0, 0};
-    e1[m] = 1;
-    const double along = e1[0] * pole[0] + e1[1] * pole[1] + e1[2] * pole[2];
-    e1 = {e1[0] - along * pole[0], e1[1] - along * pole[1], e1[2] - along * pole[2]};
-    const double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
-    e1 = {e1[0] / l1, e1[1] / l1, e1[2] / l1};
-    const Point3 e2{pole[1] * e1[2] - pole[2] * e1[1], pole[2] * e1[0] - pole[0] * e1[2], pole[0] * e1[1] - pole[1] * e1[0]};
+    const std::pair<Point3, Point3> frame = orthonormal_complement(pole);
+    const Point3 e1 = frame.first, e2 = frame.second;
     auto chart = [&](const Point3& x) {
       const Point3 v{(x[0] - c.x) / radius, (x[1] - c.y) / radius, (x[2] - c.z) / radius};
       const double d = 1 - (v[0] * pole[0] + v[1] * pole[1] + v[2] * pole[2]);
