@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "io/atomic_file.h"
+#include "io/chunked_buffer.h"
 
 namespace apollonius {
 
@@ -46,9 +47,11 @@ CLI::Validator integer_in_range(std::uint64_t min, std::uint64_t max) {
 
 void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write) {
   if (path.empty() || path == "-") {
-    std::ostringstream buffer;
-    write(buffer);
-    out << buffer.str() << std::flush;
+    Chunked_buffer buffer;
+    std::ostream stream(&buffer);
+    write(stream);
+    buffer.write_to(out);
+    out.flush();
     return;
   }
   write_file_atomically(path, write);

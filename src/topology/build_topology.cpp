@@ -16,30 +16,9 @@
 #include "topology/vertex_fan.h"
 
 namespace apollonius {
-namespace {
-
-// Edges by tie set, then start, then end, a missing end (infinity) first.
-bool edge_order(const Diagram_edge& x, const Diagram_edge& y) {
-  if (x.tie_set != y.tie_set) return x.tie_set < y.tie_set;
-  if (x.start != y.start) return x.start < y.start;
-  return x.end < y.end;
-}
-
-}  // namespace
-
 Diagram_topology build_edges(const std::vector<Site>& sites, Diagram diagram, const Topology_options& options) {
   Diagram_topology topology;
-  std::vector<std::vector<Departure>> departures(diagram.vertices.size());
-  tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
-  arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, diagram.vertices.size(),
-                      [&](std::size_t v) {
-                        throw_if_cancelled(options.cancellation);  // a throw cancels the parallel loop
-                        departures[v] = vertex_departures(sites, diagram.vertices[v]);
-                      });
-  });
-  topology.edges = edges_through_vertices(sites, diagram, departures, options.threads, options.cancellation);
-  cancellable_sort(topology.edges.begin(), topology.edges.end(), options.cancellation, edge_order);
+  topology.edges = edges_through_vertices(sites, diagram, options.threads, options.cancellation);  // sorted
   topology.vertices = std::move(diagram);
   return topology;
 }
@@ -65,8 +44,12 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   start = Clock::now();
   Vertex_free_parts parts =
       vertex_free_parts(sites, topology.vertices, topology.edges, regions, options.threads, options.cancellation);
+  // Both lists sorted: merged in linear time.
+  cancellable_sort(parts.edges.begin(), parts.edges.end(), options.cancellation, edge_precedes);
+  const std::size_t through_vertices = topology.edges.size();
   for (Diagram_edge& e : parts.edges) topology.edges.push_back(std::move(e));
-  cancellable_sort(topology.edges.begin(), topology.edges.end(), options.cancellation, edge_order);
+  std::inplace_merge(topology.edges.begin(), topology.edges.begin() + static_cast<std::ptrdiff_t>(through_vertices),
+                     topology.edges.end(), edge_precedes);
   s.vertex_free_seconds = seconds(start);
   s.candidate_triples = parts.candidate_triples;
   s.candidate_pairs = parts.candidate_pairs;

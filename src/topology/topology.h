@@ -21,6 +21,13 @@ struct Diagram_edge {
   bool closed = false;                    // a whole closed curve with no vertex
 };
 
+// The order of Diagram_topology's edges: by tie set, then start, then end, a missing end (infinity) first.
+inline bool edge_precedes(const Diagram_edge& x, const Diagram_edge& y) {
+  if (x.tie_set != y.tie_set) return x.tie_set < y.tie_set;
+  if (x.start != y.start) return x.start < y.start;
+  return x.end < y.end;
+}
+
 // A connected piece of the points where exactly sites a < b tie. Invariant: each boundary component is a
 // list of edge ids in order along it, closed, or an open chain between two ends at infinity.
 struct Diagram_face {

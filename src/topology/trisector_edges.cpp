@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "diagram/cancellable_steps.h"
 #include "predicates/trisector_predicates.h"
@@ -72,23 +73,32 @@ void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shap
 
 }  // namespace
 
-std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
-                                                 const std::vector<std::vector<Departure>>& departures, int threads,
+std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram, int threads,
                                                  const Cancellation* cancellation) {
-  // Group by curve: (triple, vertex, direction, tie set), sorted by triple.
+  // Every (triple of a vertex's tie set, vertex), grouped by triple: each trisector is built once, for
+  // all the vertices on it (a generic one has two).
   struct Entry {
     std::array<Site_index, 3> triple;
-    Departure_on_curve departure;
+    std::size_t vertex;
+    std::array<std::size_t, 3> positions;  // of the triple's sites in the vertex's tie set
   };
   std::vector<Entry> entries;
   std::size_t total = 0;
-  for (const std::vector<Departure>& at_vertex : departures) total += at_vertex.size();
-  entries.reserve(total);
-  for (std::size_t v = 0; v < departures.size(); ++v) {
-    if (v % 4096 == 0) throw_if_cancelled(cancellation);
-    for (const Departure& d : departures[v]) entries.push_back({d.triple, {v, d.direction, &d.tie_set}});
+  for (const Diagram_vertex& v : diagram.vertices) {
+    const std::size_t k = v.tie_set.size();
+    total += k * (k - 1) * (k - 2) / 6;
   }
-  cancellable_stable_sort(entries.begin(), entries.end(), cancellation, [](const Entry& x, const Entry& y) { return x.triple < y.triple; });
+  entries.reserve(total);
+  for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
+    if (v % 4096 == 0) throw_if_cancelled(cancellation);
+    const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
+    for (std::size_t i = 0; i < tie.size(); ++i)
+      for (std::size_t j = i + 1; j < tie.size(); ++j)
+        for (std::size_t l = j + 1; l < tie.size(); ++l) entries.push_back({{tie[i], tie[j], tie[l]}, v, {i, j, l}});
+  }
+  cancellable_sort(entries.begin(), entries.end(), cancellation, [](const Entry& x, const Entry& y) {
+    return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex);
+  });
   std::vector<std::size_t> group_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
@@ -98,15 +108,26 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, by_curve.size(), [&](std::size_t g) {
-      throw_if_cancelled(cancellation);
+      throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
       const std::array<Site_index, 3>& triple = entries[group_start[g]].triple;
       const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
-      const auto [kind, shape] = classify_trisector(trisector);
+      std::vector<Departure> departures;
+      std::vector<std::size_t> vertex_of;  // of each departure
+      for (std::size_t i = group_start[g]; i < group_start[g + 1]; ++i) {
+        departures_along(sites, diagram.vertices[entries[i].vertex], trisector, entries[i].positions, departures);
+        vertex_of.resize(departures.size(), entries[i].vertex);
+      }
+      if (departures.empty()) return;
       std::vector<Departure_on_curve> on_curve;
-      for (std::size_t i = group_start[g]; i < group_start[g + 1]; ++i) on_curve.push_back(entries[i].departure);
+      for (std::size_t d = 0; d < departures.size(); ++d)
+        on_curve.push_back({vertex_of[d], departures[d].direction, &departures[d].tie_set});
+      const auto [kind, shape] = classify_trisector(trisector);
       pair_departures(trisector, kind, shape, diagram, on_curve, by_curve[g]);
+      std::sort(by_curve[g].begin(), by_curve[g].end(), edge_precedes);
     });
   });
+  // Sorted: a tie set begins with its triple, so the tie sets of curves in ascending order of triple
+  // ascend, and each curve's edges are sorted.
   std::vector<Diagram_edge> edges;
   move_concatenated(by_curve, edges, cancellation);
   return edges;

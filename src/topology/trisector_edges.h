@@ -15,11 +15,11 @@
 
 namespace apollonius {
 
-// The edges through the departures of every vertex (departures[v] for vertex id v), sorted as
-// Diagram_topology's. Throws std::logic_error if the departures along some curve do not alternate
-// (leaving, arriving), which would be a defect. Checks cancellation (cancellation.h) once per curve.
-std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
-                                                 const std::vector<std::vector<Departure>>& departures, int threads,
+// The edges through the vertices of `diagram`: the departures of every vertex (vertex_fan.h), paired along
+// their curves; sorted as Diagram_topology's. Throws std::logic_error if the departures along some curve
+// do not alternate (leaving, arriving), which would be a defect. Checks cancellation (cancellation.h) once
+// per curve and per 4096 vertices.
+std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram, int threads,
                                                  const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

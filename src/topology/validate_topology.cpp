@@ -26,6 +26,8 @@ void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t
     if (edge.tie_set.size() < 3 || !std::is_sorted(edge.tie_set.begin(), edge.tie_set.end()))
       violated("edge " + std::to_string(e) + " has no ascending tie set of 3 or more");
     if (edge.closed && (edge.start || edge.end)) violated("closed edge " + std::to_string(e) + " has an end");
+    if (e > 0 && !edge_precedes(t.edges[e - 1], edge))
+      violated("edges " + std::to_string(e - 1) + " and " + std::to_string(e) + " are out of order or equal");
     for (const std::optional<std::size_t>& v : {edge.start, edge.end}) {
       if (!v) continue;
       if (*v >= vertices.size() || !holds(vertices[*v].tie_set, edge.tie_set))

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "diagram/diagram.h"
+#include "predicates/trisector.h"
 
 namespace apollonius {
 
@@ -20,7 +21,12 @@ struct Departure {
   int direction = 0;  // +1: the edge leaves forward along the triple's trisector (trisector.h); -1: backward
 };
 
-// Every edge leaving v, each once (from the smallest triple of its tie set), in a fixed order.
+// The edges leaving v along `trisector`, the trisector of v.tie_set[i], v.tie_set[j], v.tie_set[l]
+// (i < j < l), each once (from the smallest triple of its tie set): none, one or two, appended to out.
+void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, const Trisector& trisector,
+                      const std::array<std::size_t, 3>& positions, std::vector<Departure>& out);
+
+// Every edge leaving v, each once, in a fixed order (departures_along over every triple of v's tie set).
 std::vector<Departure> vertex_departures(const std::vector<Site>& sites, const Diagram_vertex& v);
 
 }  // namespace apollonius

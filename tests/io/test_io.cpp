@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/chunked_buffer.h"
 #include "io/input_error.h"
 #include "io/json_input.h"
 #include "io/json_output.h"
@@ -725,4 +726,35 @@ TEST_CASE("PDB atom coordinates: each column field is one whole number") {
     line.replace(38, 8, field);
     check_text_error(line, 1, reason);
   }
+}
+
+TEST_CASE("Chunked_buffer holds what an ostringstream holds, across its chunks") {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    CAPTURE(seed);
+    std::mt19937_64 random(seed);
+    Chunked_buffer chunks;
+    std::ostream through_chunks(&chunks);
+    std::ostringstream expected;
+    std::size_t written = 0;
+    while (written < (std::size_t{5} << 20)) {  // five chunks and some
+      const std::size_t length = random() % 3 == 0 ? random() % 3000000 : random() % 40;
+      std::string text(length, static_cast<char>('a' + random() % 26));
+      if (length == 1) {
+        through_chunks.put(text[0]);
+        expected.put(text[0]);
+      } else {
+        through_chunks << text << 1.5 << ' ';
+        expected << text << 1.5 << ' ';
+      }
+      written += length + 4;
+    }
+    std::ostringstream out;
+    chunks.write_to(out);
+    REQUIRE(out.str().size() == expected.str().size());
+    CHECK(out.str() == expected.str());
+  }
+  Chunked_buffer empty;
+  std::ostringstream out;
+  empty.write_to(out);
+  CHECK(out.str().empty());
 }

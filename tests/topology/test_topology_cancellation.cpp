@@ -109,9 +109,7 @@ TEST_CASE("a cancellation requested before the call stops build_topology, and ev
     Diagram_topology faces_to_add = build_edges(sites, v.diagram);
     CHECK_THROWS_AS(add_faces_and_cells(sites, faces_to_add, {}, v.regions.far_sets, threads, &cancellation), Cancelled);
   }
-  std::vector<std::vector<Departure>> departures;
-  for (const Diagram_vertex& vertex : whole.vertices.vertices) departures.push_back(vertex_departures(sites, vertex));
-  CHECK_THROWS_AS(edges_through_vertices(sites, whole.vertices, departures, 1, &cancellation), Cancelled);
+  CHECK_THROWS_AS(edges_through_vertices(sites, whole.vertices, 1, &cancellation), Cancelled);
   CHECK_THROWS_AS(boundary_components(sites, whole.vertices, whole.edges, &cancellation), Cancelled);
   // The nesting of one pair's components, on a pair that has some.
   const std::vector<Boundary_component> components = boundary_components(sites, whole.vertices, whole.edges);
