@@ -325,6 +325,11 @@ class Cell_integrator {
     return best;
   }
 
+  // Whether exit x bounds the rays near a, where it ties another. A plane through the site (N = 0) is the
+  // least exit, 0, on its outer side and none on the other: it changes at its pole, where its denominator
+  // vanishes and it ties every other exit (ties: A = 0, root -e0 / e1), so the pole counts.
+  static bool bounds_near(const Line_exit& x, double a, double p_norm) { return x.N == 0 || x.denominator(a, p_norm) > 0; }
+
   // The pieces of the line: the least exit and where it changes, walking from a = -1 to 1 through the
   // ties of the current least exit with every other (a kinetic lower envelope). Each step moves right by
   // at least 1e-13, and a line whose pieces outnumber any real envelope's gives up into one checked piece.
@@ -344,8 +349,7 @@ class Cell_integrator {
         ties(l, c, x, a + 1e-13, next, roots, count);
         for (int r = 0; r < count; ++r) {
           const double p_norm = std::sqrt(l.s2 + roots[r] * roots[r]);
-          if (x.denominator(roots[r], p_norm) > 0 && c.denominator(roots[r], p_norm) > 0)
-            next = std::min(next, roots[r]);
+          if (bounds_near(x, roots[r], p_norm) && bounds_near(c, roots[r], p_norm)) next = std::min(next, roots[r]);
         }
       }
       if (!pieces.empty() && pieces.back().exit == c.k)
@@ -699,12 +703,22 @@ class Cell_integrator {
   }
 
   void integrate_face(int face) {
-    constexpr int kSamples = kFaceSamples;
+    std::vector<double> at;
+    for (int k = 0; k <= kFaceSamples; ++k) at.push_back(-1 + 2.0 * k / kFaceSamples);
+    // A plane of the box through the site, across the lines (p[m] = b): every line's exit jumps from 0 to
+    // another at b = 0, a jump that bisection would only bracket (an error of its width times the jump),
+    // so b = 0 ends intervals: the line there has the other side's exits, and the bracket of the event
+    // lies on one side of it.
+    const int across = (face / 2 + 2) % 3;
+    for (const Exit& x : exits_)
+      if (x.cut == kPlane && x.axis == across && x.h == 0) {
+        if (!std::binary_search(at.begin(), at.end(), 0.0)) at.insert(std::upper_bound(at.begin(), at.end(), 0.0), 0.0);
+        break;
+      }
     std::vector<std::vector<int>> signatures;
-    for (int k = 0; k <= kSamples; ++k) signatures.push_back(signature(face, -1 + 2.0 * k / kSamples, face_live_[face]));
-    for (int k = 0; k < kSamples; ++k)
-      interval(face, -1 + 2.0 * k / kSamples, -1 + 2.0 * (k + 1) / kSamples, signatures[k], signatures[k + 1], 0,
-               face_live_[face]);
+    for (double b : at) signatures.push_back(signature(face, b, face_live_[face]));
+    for (std::size_t k = 0; k + 1 < at.size(); ++k)
+      interval(face, at[k], at[k + 1], signatures[k], signatures[k + 1], 0, face_live_[face]);
   }
 
   // Rough volume and distance integral (a midpoint rule over a few lines per face), which set the error

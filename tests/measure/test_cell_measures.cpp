@@ -55,7 +55,11 @@ double voronoi_cell_volume(const std::vector<Site>& sites, std::size_t i, const 
     planes.emplace_back(n[0], n[1], n[2], box.lo[a]);
   }
   Mesh cell;
-  CGAL::halfspace_intersection_3(planes.begin(), planes.end(), cell, boost::optional<Point>(xi));
+  // A site on a wall is no interior point: CGAL then finds one itself.
+  const bool inside = xi.x() > box.lo[0] && xi.x() < box.hi[0] && xi.y() > box.lo[1] && xi.y() < box.hi[1] &&
+                      xi.z() > box.lo[2] && xi.z() < box.hi[2];
+  CGAL::halfspace_intersection_3(planes.begin(), planes.end(), cell,
+                                 inside ? boost::optional<Point>(xi) : boost::optional<Point>());
   std::vector<Point> corners(cell.points().begin(), cell.points().end());
   Mesh hull;
   CGAL::convex_hull_3(corners.begin(), corners.end(), hull);
@@ -260,6 +264,76 @@ TEST_CASE("two weighted sites: the hyperboloid split against Cartesian nested qu
     CHECK(m[0].volume_derivatives[0].second < 0);
     CHECK(m[0].volume_derivatives[0].second == doctest::Approx(m[1].volume_derivatives[0].second).epsilon(1e-6));
   }
+}
+
+// Sites on the box's walls, edges and corners: each coordinate moved onto a wall with probability 1/3.
+std::vector<Site> sites_on_walls(std::mt19937_64& random, std::size_t n, double weight_spread) {
+  std::vector<Site> sites = random_sites(random, n, kUnitCube, weight_spread);
+  for (Site& s : sites)
+    for (double* c : {&s.x, &s.y, &s.z})
+      if (random() % 3 == 0) *c = random() % 2 == 0 ? 0.0 : 1.0;
+  return sites;
+}
+
+// The owner of a point by brute force over all sites: independent of the diagram and of the cubature.
+std::size_t nearest_site(const std::vector<Site>& sites, double x, double y, double z) {
+  std::size_t best = 0;
+  double best_distance = INFINITY;
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    const double d = std::hypot(x - sites[j].x, y - sites[j].y, z - sites[j].z) - sites[j].w;
+    if (d < best_distance) best_distance = d, best = j;
+  }
+  return best;
+}
+
+// Regression (tests/data/regression/measure_cells_volumes_exceed_box.balls): a plane of the box through the
+// site is the exit 0 on its outer side and none on the other, a jump that no tie marks; the walk along a
+// line missed it and gave such cells the volume beyond the wall (10% too much), and then the outer rule
+// bracketed the jump at b = 0 instead of ending an interval there (errors of 1e-7 at any tolerance).
+TEST_CASE("regression: measure_cells_volumes_exceed_box, sites on the box's walls, edges and corners") {
+  std::size_t cells = 0;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    CAPTURE(seed);
+    std::mt19937_64 random(seed);
+    const std::size_t n = 2 + seed % 12;
+    const bool equal_weights = seed % 2 == 0;
+    const std::vector<Site> sites = sites_on_walls(random, n, equal_weights ? 0 : 0.15);
+    const double tolerance = seed % 4 < 2 ? 1e-6 : 1e-9;
+    const std::vector<Cell_measure> m = measure(sites, kUnitCube, tolerance);
+    std::vector<std::size_t> count(n, 0);
+    const std::size_t samples = equal_weights ? 0 : 200000;
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (std::size_t s = 0; s < samples; ++s) {
+      const double x = unit(random), y = unit(random), z = unit(random);
+      ++count[nearest_site(sites, x, y, z)];
+    }
+    double total = 0, total_error = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      CAPTURE(i);
+      CAPTURE(sites[i].x);
+      CAPTURE(sites[i].y);
+      CAPTURE(sites[i].z);
+      CAPTURE(m[i].volume);
+      CAPTURE(m[i].volume_error);
+      CHECK(m[i].reached_tolerance);
+      total += m[i].volume;
+      total_error += m[i].volume_error;
+      ++cells;
+      if (equal_weights) {  // convex cells: CGAL's exact halfspace intersection
+        const double exact = voronoi_cell_volume(sites, i, kUnitCube);
+        CAPTURE(exact);
+        CHECK(std::fabs(m[i].volume - exact) <= tolerance * exact + 1e-15);
+        CHECK(std::fabs(m[i].volume - exact) <= m[i].volume_error + 1e-15);
+      } else {  // 5 standard deviations of the binomial count
+        const double p = m[i].volume, sigma = std::sqrt(samples * p * (1 - p));
+        CAPTURE(count[i]);
+        CHECK(std::fabs(static_cast<double>(count[i]) - samples * p) <= 5 * sigma + 1);
+      }
+    }
+    CAPTURE(total);
+    CHECK(std::fabs(total - 1) <= 2 * total_error + 1e-15);
+  }
+  CHECK(cells > 150);
 }
 
 TEST_CASE("weighted cells against Monte Carlo (5 standard deviations)") {
