@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -103,6 +104,25 @@ bool self_intersects(const Diagram_mesh& mesh, const std::vector<std::array<std:
 
 double weighted_distance(const Point3& x, const Site& s) { return distance(x, {s.x, s.y, s.z}) - s.w; }
 
+// Per site, how many of `samples` uniform points of the box are nearest to it (by every cell's site:
+// independent of everything in src/), and within `probe` of it.
+std::vector<double> monte_carlo_hits(const std::vector<Site>& sites, const Diagram_topology& topology, const Axis_box& box,
+                                     int samples, std::uint64_t seed, double probe = std::numeric_limits<double>::infinity()) {
+  std::vector<double> hits(sites.size(), 0);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < samples; ++k) {
+    Point3 x;
+    for (int a = 0; a < 3; ++a) x[a] = box.lo[a] + (box.hi[a] - box.lo[a]) * unit(random);
+    Site_index best = topology.cells.front().site;
+    for (const Diagram_cell& c : topology.cells)
+      if (weighted_distance(x, sites[c.site]) < weighted_distance(x, sites[best])) best = c.site;
+    if (weighted_distance(x, sites[best]) <= probe) hits[best] += 1;
+  }
+  return hits;
+}
+
+
 // Checks every property of the header on one input; returns the largest relative volume error.
 void check_mesh(const std::vector<Site>& sites, const Diagram_mesh& mesh, const Diagram_topology& topology,
                 const std::string& name, bool compare_volumes = true) {
@@ -135,18 +155,8 @@ void check_mesh(const std::vector<Site>& sites, const Diagram_mesh& mesh, const 
   CHECK(nearer == 0);
   CHECK(off_wall == 0);
   // Monte Carlo volumes: the nearest site of uniform points of the box.
-  std::vector<double> hits(sites.size(), 0);
   const int samples = compare_volumes ? 200000 : 0;
-  std::mt19937_64 random(12345);
-  std::uniform_real_distribution<double> unit(0, 1);
-  for (int k = 0; k < samples; ++k) {
-    Point3 x;
-    for (int a = 0; a < 3; ++a) x[a] = mesh.box.lo[a] + (mesh.box.hi[a] - mesh.box.lo[a]) * unit(random);
-    Site_index best = topology.cells.front().site;
-    for (const Diagram_cell& c : topology.cells)
-      if (weighted_distance(x, sites[c.site]) < weighted_distance(x, sites[best])) best = c.site;
-    hits[best] += 1;
-  }
+  const std::vector<double> hits = monte_carlo_hits(sites, topology, mesh.box, samples, 12345);
   double total = 0;
   for (const Diagram_cell& cell : topology.cells) {
     CAPTURE(cell.site);
@@ -307,18 +317,8 @@ TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius
       }
     CHECK(off == 0);
     // Monte Carlo: points of the box nearest to the cell's site and within its ball.
-    std::vector<double> hits(sites.size(), 0);
     const int samples = 200000;
-    std::mt19937_64 random(seed);
-    std::uniform_real_distribution<double> unit(0, 1);
-    for (int k = 0; k < samples; ++k) {
-      Point3 x;
-      for (int a = 0; a < 3; ++a) x[a] = mesh.box.lo[a] + (mesh.box.hi[a] - mesh.box.lo[a]) * unit(random);
-      Site_index best = topology.cells.front().site;
-      for (const Diagram_cell& c : topology.cells)
-        if (weighted_distance(x, sites[c.site]) < weighted_distance(x, sites[best])) best = c.site;
-      if (weighted_distance(x, sites[best]) <= options.probe) hits[best] += 1;
-    }
+    const std::vector<double> hits = monte_carlo_hits(sites, topology, mesh.box, samples, seed, options.probe);
     for (const Diagram_cell& cell : topology.cells) {
       CAPTURE(cell.site);
       const auto triangles = cell_triangles(mesh, cell.site);

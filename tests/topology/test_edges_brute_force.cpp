@@ -129,7 +129,8 @@ void check_families(bool heavy) {
   }
   MESSAGE(inputs << " inputs, " << edges << " edges (" << vertex_free << " with no vertex), all equal");
   CHECK(vertex_free > 0);
-  CHECK(edges > 10 * inputs);
+  // The sizes cycle through 5 to 16 every 12 seeds; fewer seeds (sanitizer runs) have only small inputs.
+  if (seeds_per_family() >= 12) CHECK(edges > 10 * inputs);
 }
 
 std::vector<Site> regression_sites(const std::string& name) {
