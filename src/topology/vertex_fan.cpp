@@ -28,26 +28,12 @@ void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, c
   // Counted once, from the smallest triple of the edge's tie set.
   if (!along.empty() && along.front() < triple[2]) return;
   if (forward && backward && along.size() + 3 == k)
-    throw std::logic_error("vertex_departures: every tied site ties along one curve at a vertex");
+    throw std::logic_error("departures_along: every tied site ties along one curve at a vertex");
   std::vector<Site_index> tie_set(triple.begin(), triple.end());
   tie_set.insert(tie_set.end(), along.begin(), along.end());
   std::sort(tie_set.begin(), tie_set.end());
   if (forward) out.push_back({triple, tie_set, +1});
   if (backward) out.push_back({triple, std::move(tie_set), -1});
-}
-
-std::vector<Departure> vertex_departures(const std::vector<Site>& sites, const Diagram_vertex& v) {
-  const std::vector<Site_index>& tie = v.tie_set;
-  const std::size_t k = tie.size();
-  std::vector<Departure> departures;
-  for (std::size_t i = 0; i < k; ++i)
-    for (std::size_t j = i + 1; j < k; ++j)
-      for (std::size_t l = j + 1; l < k; ++l) {
-        const std::array<Site_index, 3> triple{tie[i], tie[j], tie[l]};
-        const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
-        departures_along(sites, v, trisector, {i, j, l}, departures);
-      }
-  return departures;
 }
 
 }  // namespace apollonius

@@ -26,7 +26,4 @@ struct Departure {
 void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, const Trisector& trisector,
                       const std::array<std::size_t, 3>& positions, std::vector<Departure>& out);
 
-// Every edge leaving v, each once, in a fixed order (departures_along over every triple of v's tie set).
-std::vector<Departure> vertex_departures(const std::vector<Site>& sites, const Diagram_vertex& v);
-
 }  // namespace apollonius
