@@ -51,6 +51,35 @@ void cancellable_stable_sort(Iterator first, Iterator last, const Cancellation* 
   throw_if_cancelled(cancellation);
 }
 
+// Sorts by `less`, which must order first by bucket_of (an integer below bucket_count): the elements are
+// moved in place into their buckets (one American-flag pass: each move puts one element in its bucket for
+// good), then each bucket is sorted. O(n + bucket_count) plus the buckets' sorts; the occurrence lists of
+// the whole diagram, keyed by their smallest site, have buckets of a few dozen elements.
+template <class T, class Bucket_of, class Less>
+void bucketed_sort(std::vector<T>& items, std::size_t bucket_count, Bucket_of bucket_of, Less less,
+                   const Cancellation* cancellation) {
+  std::vector<std::size_t> start(bucket_count + 1, 0);
+  for (const T& x : items) ++start[bucket_of(x) + 1];
+  for (std::size_t b = 0; b < bucket_count; ++b) start[b + 1] += start[b];
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);  // the first place of bucket b not yet final
+  std::size_t moves = 0;
+  for (std::size_t b = 0; b < bucket_count; ++b)
+    while (next[b] < start[b + 1]) {
+      if (++moves % 4096 == 0) throw_if_cancelled(cancellation);
+      const std::size_t c = bucket_of(items[next[b]]);
+      if (c == b)
+        ++next[b];
+      else
+        std::swap(items[next[b]], items[next[c]++]);
+    }
+  for (std::size_t b = 0; b < bucket_count; ++b) {
+    if (b % 4096 == 0) throw_if_cancelled(cancellation);
+    if (start[b + 1] - start[b] > 1)
+      cancellable_sort(items.begin() + static_cast<std::ptrdiff_t>(start[b]),
+                       items.begin() + static_cast<std::ptrdiff_t>(start[b + 1]), cancellation, less);
+  }
+}
+
 // Moves the elements of every list, in order, to the end of `out` (reserved once), freeing each list as it
 // goes (freeing millions of small vectors at once takes a while too); checks every 4096 elements.
 template <class T>

@@ -139,9 +139,17 @@ void Json_stream::quoted(std::string_view text) {
     raw(nlohmann::json(std::string(text)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     return;
   }
-  raw("\"");
-  raw(text);
-  raw("\"");
+  if (text.size() + 2 > buffer_.size()) {
+    raw("\"");
+    raw(text);
+    raw("\"");
+    return;
+  }
+  char* at = room(text.size() + 2);  // one copy: keys are most of the strings, a few per value
+  at[0] = '"';
+  std::memcpy(at + 1, text.data(), text.size());
+  at[text.size() + 1] = '"';
+  used_ += text.size() + 2;
 }
 
 void Json_stream::number_or_infinity(double number) {

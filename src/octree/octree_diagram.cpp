@@ -146,10 +146,8 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
             region_box_needed(sites, c.data(), c.data() + c.size(), escapes))
           r.boxes.push_back({partition.box(id), Octree_regions::Sites(c.begin(), c.end())});
       }
+      // In the order of the seeds, each refined depth first: the same for every thread count, with no sort.
       move_concatenated(seed_regions, r.boxes, options.cancellation);
-      // The boxes are disjoint: their lower corners order them, whatever the threads did.
-      cancellable_sort(r.boxes.begin(), r.boxes.end(), options.cancellation,
-                       [](const Octree_regions::Box& x, const Octree_regions::Box& y) { return x.box.lo < y.box.lo; });
     }
     for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();

@@ -56,7 +56,8 @@ struct Octree_regions {
     Sites sites;  // ascending, 2 or more
   };
   // Of the boxes of the octree with 2 or more sites (which tile R with those of 0 or 1), those whose sites
-  // hold two escaping ones or three that may have a closed trisector; ordered by lower corner.
+  // hold two escaping ones or three that may have a closed trisector; in an order that does not depend
+  // on the thread count (the seed boxes', each refined depth first).
   std::vector<Box> boxes;
   bool has_octree = false;  // false: no box at all, every active site escapes (fewer than 4 active sites)
   Axis_box root;

@@ -141,7 +141,7 @@ struct Union_find {
 Face_grouping group_components(const std::vector<Site>& sites, const Diagram& diagram,
                                const std::vector<Diagram_edge>& edges,
                                const std::vector<const Boundary_component*>& components,
-                               const Cancellation* cancellation) {
+                               const Cancellation* cancellation, Level_lines lines) {
   const Site_index a = components.front()->a, b = components.front()->b;
   std::vector<Pair_edge> pair_edges;
   for (std::size_t c = 0; c < components.size(); ++c)
@@ -200,6 +200,48 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   heights.erase(std::unique(heights.begin(), heights.end(),
                             [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::ZERO; }),
                 heights.end());
+  // One line, sorted along d: the crossings of the pair's edges with the level e . v = y on the sheet.
+  struct Crossing {
+    Level_value abscissa;
+    std::size_t edge;
+    Curve_point point;
+  };
+  const auto crossings_at = [&](const Rational& y) {
+    std::vector<Crossing> crossings;
+    for (std::size_t i = 0; i < pair_edges.size(); ++i) {
+      const Trisector& t = *pair_edges[i].trisector;
+      for (const Curve_point& p : curve_points(t, level_cut(e), level_offset(e, t.origin(), y)))
+        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, d), i, p});
+    }
+    std::sort(crossings.begin(), crossings.end(),
+              [](const Crossing& x, const Crossing& y) { return compare_levels(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
+    return crossings;
+  };
+  // Whether the face lies on the +d side of a line's first crossing.
+  const auto face_after = [&](const Crossing& first_crossing) {
+    const Pair_edge& first = pair_edges[first_crossing.edge];
+    Site_index third = a;
+    for (Site_index s : first.edge->tie_set)
+      if (s != a && s != b) third = s;
+    return face_side(first_crossing.point, sites[a], sites[b], sites[third], e, d) == Sign::POSITIVE;
+  };
+
+  // One closed cycle alone (the usual nested pair: a ball between a and b cuts a hole in their face, or
+  // their face is a disc): the face is its inside or its outside. A level in the lowest slab lies strictly
+  // between the cycle's lowest and highest points, so its line crosses the cycle (which is connected), and
+  // at no critical height, so at every crossing it passes from one side to the other; the line's two ends
+  // lie outside the cycle. The face is bounded exactly when the line enters it at its first crossing: one
+  // line instead of one per slab (the tests check the sweep below agrees: lines = every_slab).
+  if (lines == Level_lines::fewest && components.size() == 1 && components.front()->closed && heights.size() >= 2) {
+    const std::vector<Crossing> crossings = crossings_at(level_between(heights[0], heights[1]));
+    if (crossings.size() < 2 || crossings.size() % 2 != 0)
+      throw std::logic_error("face nesting: a level line inside a closed cycle does not cross it in pairs");
+    Face_grouping one_face;
+    one_face.faces.push_back({0});
+    one_face.bounded.push_back(face_after(crossings.front()));
+    return one_face;
+  }
+
   std::vector<Rational> levels;
   if (heights.empty()) {
     levels.push_back(0);
@@ -220,29 +262,13 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   bool crossing_free_line = false;
   for (std::size_t l = 0; l < levels.size(); ++l) {
     throw_if_cancelled(cancellation);
-    struct Crossing {
-      Level_value abscissa;
-      std::size_t edge;
-      Curve_point point;
-    };
-    std::vector<Crossing> crossings;
-    for (std::size_t i = 0; i < pair_edges.size(); ++i) {
-      const Trisector& t = *pair_edges[i].trisector;
-      for (const Curve_point& p : curve_points(t, level_cut(e), level_offset(e, t.origin(), levels[l])))
-        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, d), i, p});
-    }
+    const std::vector<Crossing> crossings = crossings_at(levels[l]);
     if (crossings.empty()) {
       crossing_free_line = true;
       continue;
     }
-    std::sort(crossings.begin(), crossings.end(),
-              [](const Crossing& x, const Crossing& y) { return compare_levels(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
     // The face at the first crossing: on its +d side or before it; then it alternates.
-    const Pair_edge& first = pair_edges[crossings.front().edge];
-    Site_index third = a;
-    for (Site_index s : first.edge->tie_set)
-      if (s != a && s != b) third = s;
-    const bool after_first = face_side(crossings.front().point, sites[a], sites[b], sites[third], e, d) == Sign::POSITIVE;
+    const bool after_first = face_after(crossings.front());
     const bool outermost = l == 0 || l + 1 == levels.size();
     bool inside = !after_first;  // before the first crossing
     if (left_in_face && *left_in_face != inside)

@@ -9,7 +9,8 @@
 // reaching the line's end, is part of an unbounded face.
 //
 // Cost: O(k) heights and O(k) crossings per line for the k edges of the pair's components: O(k^2) exact
-// constructions, which is why it runs only where the components do not settle it alone.
+// constructions, which is why it runs only where the components do not settle it alone; O(k) for one
+// closed cycle alone, which needs one line.
 #pragma once
 
 #include <vector>
@@ -24,11 +25,15 @@ struct Face_grouping {
   std::vector<bool> bounded;                    // per face
 };
 
+// fewest: one closed cycle alone is decided by one level line across it (O(k) constructions); every_slab:
+// always one line per slab, the general sweep (the tests check that both agree).
+enum class Level_lines { fewest, every_slab };
+
 // Precondition: every component is of the same pair, a < b. Checks cancellation (cancellation.h) once
 // per edge of the pair while finding the critical heights, and per level line.
 Face_grouping group_components(const std::vector<Site>& sites, const Diagram& diagram,
                                const std::vector<Diagram_edge>& edges,
                                const std::vector<const Boundary_component*>& components,
-                               const Cancellation* cancellation = nullptr);
+                               const Cancellation* cancellation = nullptr, Level_lines lines = Level_lines::fewest);
 
 }  // namespace apollonius

@@ -96,9 +96,9 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
       for (std::size_t j = i + 1; j < tie.size(); ++j)
         for (std::size_t l = j + 1; l < tie.size(); ++l) entries.push_back({{tie[i], tie[j], tie[l]}, v, {i, j, l}});
   }
-  cancellable_sort(entries.begin(), entries.end(), cancellation, [](const Entry& x, const Entry& y) {
-    return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex);
-  });
+  bucketed_sort(
+      entries, sites.size(), [](const Entry& x) { return x.triple[0]; },
+      [](const Entry& x, const Entry& y) { return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex); }, cancellation);
   std::vector<std::size_t> group_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);

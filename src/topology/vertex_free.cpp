@@ -241,8 +241,8 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
     for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
   }
-  const auto grouped = [&](auto& seen, auto skip) {
-    cancellable_sort(seen.begin(), seen.end(), cancellation);
+  const auto grouped = [&](auto& seen, auto first_site, auto skip) {
+    bucketed_sort(seen, sites.size(), first_site, std::less<>(), cancellation);
     std::vector<std::pair<typename std::decay_t<decltype(seen)>::value_type::first_type, Occurrences>> groups;
     for (std::size_t i = 0, group = 0; i < seen.size(); ++group) {
       if (group % 4096 == 0) throw_if_cancelled(cancellation);
@@ -258,7 +258,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     return groups;
   };
   // A triple of three sites with a common vertex has its edges through that vertex already.
-  const auto triples = grouped(triple_seen, [&](const Triple& t) {
+  const auto triples = grouped(triple_seen, [](const auto& o) { return o.first[0]; }, [&](const Triple& t) {
     return share(vertices_of_site[t[0]], vertices_of_site[t[1]], vertices_of_site[t[2]]);
   });
 
@@ -320,7 +320,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
       sites.size(), edges.size() + parts.edges.size(),
       [&](std::size_t e) -> const auto& { return (e < edges.size() ? edges[e] : parts.edges[e - edges.size()]).tie_set; },
       cancellation);
-  const auto pairs = grouped(pair_seen, [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
+  const auto pairs = grouped(pair_seen, [](const auto& o) { return o.first.first; }, [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
   parts.candidate_pairs = pairs.size();
   for (const auto& [pair, seen] : pairs) {
     throw_if_cancelled(cancellation);
