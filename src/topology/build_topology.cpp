@@ -79,51 +79,54 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
   for (const auto& [a, b] : whole_sheets) topology.faces.push_back({a, b, {}, false});
   // Faces: one open chain alone is one unbounded face; otherwise the components' nesting decides
   // (face_nesting.h). Faces are sorted by pair, then by their boundary.
-  const std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges, cancellation);
+  std::vector<Boundary_component> components = boundary_components(sites, diagram, topology.edges, cancellation);
+  // Each pair's components: [first, first + count) in `components`.
   struct Pair_components {
-    std::vector<const Boundary_component*> components;
-    Face_grouping grouping;  // filled when the components' nesting must be decided
+    std::size_t first = 0, count = 0;
     bool nested = false;
   };
   std::vector<Pair_components> pairs;
-  std::size_t pair_count = 0;
-  for (std::size_t i = 0; i < components.size(); ++i)
-    if (i == 0 || components[i].a != components[i - 1].a || components[i].b != components[i - 1].b) ++pair_count;
-  pairs.reserve(pair_count);  // a million of them: reallocations would move them all at once
+  std::vector<std::size_t> nested;  // positions in pairs of those whose nesting must be decided
   for (std::size_t i = 0; i < components.size();) {
     if (pairs.size() % 4096 == 0) throw_if_cancelled(cancellation);
     Pair_components p;
+    p.first = i;
     const Boundary_component& c = components[i];
-    for (; i < components.size() && components[i].a == c.a && components[i].b == c.b; ++i)
-      p.components.push_back(&components[i]);
+    for (; i < components.size() && components[i].a == c.a && components[i].b == c.b; ++i) ++p.count;
     // An open chain alone bounds one unbounded face; a closed cycle alone of sites that own no point far
     // away together bounds one bounded face (it contains no neighbourhood of infinity). On proteins nearly
     // every nested pair was such a cycle of two escaping sites, until the far sets decided them.
-    p.nested = p.components.size() > 1 || (c.closed && far_together(c.a, c.b));
-    pairs.push_back(std::move(p));
+    p.nested = p.count > 1 || (c.closed && far_together(c.a, c.b));
+    if (p.nested) nested.push_back(pairs.size());
+    pairs.push_back(p);
   }
   // The pairs' nestings are independent: in parallel, each into its own slot, so the output is the same
   // for every thread count.
+  std::vector<Face_grouping> groupings(nested.size());
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
-      if (!pairs[k].nested) return;
+    tbb::parallel_for(std::size_t{0}, nested.size(), [&](std::size_t k) {
       throw_if_cancelled(cancellation);
-      pairs[k].grouping = group_components(sites, diagram, topology.edges, pairs[k].components, cancellation);
+      const Pair_components& p = pairs[nested[k]];
+      std::vector<const Boundary_component*> of_pair;
+      for (std::size_t i = p.first; i < p.first + p.count; ++i) of_pair.push_back(&components[i]);
+      groupings[k] = group_components(sites, diagram, topology.edges, of_pair, cancellation);
     });
   });
-  for (std::size_t q = 0; q < pairs.size(); ++q) {
+  topology.faces.reserve(topology.faces.size() + components.size());  // at most one face per component
+  for (std::size_t q = 0, k = 0; q < pairs.size(); ++q) {
     if (q % 4096 == 0) throw_if_cancelled(cancellation);
     const Pair_components& p = pairs[q];
-    const Boundary_component& c = *p.components.front();
+    Boundary_component& c = components[p.first];
     if (!p.nested) {
-      topology.faces.push_back({c.a, c.b, {c.edges}, c.closed});
+      topology.faces.push_back({c.a, c.b, {std::move(c.edges)}, c.closed});
       continue;
     }
     ++topology.statistics.nested_pairs;
-    for (std::size_t f = 0; f < p.grouping.faces.size(); ++f) {
-      Diagram_face face{c.a, c.b, {}, p.grouping.bounded[f]};
-      for (std::size_t k : p.grouping.faces[f]) face.boundary.push_back(p.components[k]->edges);
+    const Face_grouping& grouping = groupings[k++];
+    for (std::size_t f = 0; f < grouping.faces.size(); ++f) {
+      Diagram_face face{c.a, c.b, {}, grouping.bounded[f]};
+      for (std::size_t j : grouping.faces[f]) face.boundary.push_back(components[p.first + j].edges);
       topology.faces.push_back(std::move(face));
     }
   }

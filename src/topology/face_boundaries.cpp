@@ -18,10 +18,19 @@ using Pair = std::pair<Site_index, Site_index>;
 
 Pair ordered(Site_index x, Site_index y) { return x < y ? Pair{x, y} : Pair{y, x}; }
 
-// The pairs of consecutive sites around the edge.
-std::vector<Pair> pairs_around(const std::vector<Site>& sites, const Diagram& diagram, const Diagram_edge& e) {
+struct Half_edge {
+  std::size_t edge;
+  Pair pair;
+};
+
+// The pairs of consecutive sites around edge e, as half-edges appended to `halves`.
+void add_pairs_around(const std::vector<Site>& sites, const Diagram& diagram, const Diagram_edge& e, std::size_t id,
+                      std::vector<Half_edge>& halves) {
   const std::vector<Site_index>& tie = e.tie_set;
-  if (tie.size() == 3) return {ordered(tie[0], tie[1]), ordered(tie[0], tie[2]), ordered(tie[1], tie[2])};
+  if (tie.size() == 3) {  // all three pairs (a tie set is ascending), with no allocation: nearly every edge
+    for (const Pair& p : {Pair{tie[0], tie[1]}, Pair{tie[0], tie[2]}, Pair{tie[1], tie[2]}}) halves.push_back({id, p});
+    return;
+  }
   const std::optional<std::size_t> at = e.start ? e.start : e.end;
   const std::array<Site_index, 3> triple{tie[0], tie[1], tie[2]};
   const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
@@ -30,15 +39,9 @@ std::vector<Pair> pairs_around(const std::vector<Site>& sites, const Diagram& di
   // The order is the same all along the edge: at a vertex of it, or, with none, at its canonical point.
   const std::vector<std::size_t> order = at ? order_around_edge(t, diagram.vertices[*at].vertex, tied)
                                             : order_around_edge(t, arc_witness(t, std::nullopt, std::nullopt), tied);
-  std::vector<Pair> pairs;
-  for (std::size_t k = 0; k < order.size(); ++k) pairs.push_back(ordered(tie[order[k]], tie[order[(k + 1) % order.size()]]));
-  return pairs;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    halves.push_back({id, ordered(tie[order[k]], tie[order[(k + 1) % order.size()]])});
 }
-
-struct Half_edge {
-  std::size_t edge;
-  Pair pair;
-};
 
 // The ends (2 h + side) of the half-edges of one pair at one vertex, two by two as they bound the face's
 // sectors there. More than two when the vertex has 5 or more tied sites: by their order around the vertex
@@ -92,54 +95,61 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
                                                     const std::vector<Diagram_edge>& edges,
                                                     const Cancellation* cancellation) {
   std::vector<Half_edge> halves;
+  std::vector<std::size_t> first_half(edges.size() + 1, 0);  // edge e's half-edges: [first_half[e], first_half[e + 1])
   halves.reserve(3 * edges.size());  // three pairs around an edge of three tied sites
   for (std::size_t e = 0; e < edges.size(); ++e) {
     throw_if_cancelled(cancellation);
-    for (const Pair& p : pairs_around(sites, diagram, edges[e])) halves.push_back({e, p});
+    add_pairs_around(sites, diagram, edges[e], e, halves);
+    first_half[e + 1] = halves.size();
   }
 
   // At each vertex, the half-edges of one pair come in twos: link their ends (side 0: start, 1: end).
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::array<std::size_t, 2>> link(halves.size(), {kNone, kNone});  // 2 h + side of the other end
-  // Every end as (vertex, pair, 2 h + side), sorted: grouped by vertex and pair. (A sorted vector, not a
-  // map: a million map nodes took half a second to free, with no check of the cancellation.) Placed by
-  // vertex in linear time, then sorted within each vertex, which has a few ends.
+  // The edge ends at each vertex (2 e + side), placed by vertex in linear time; then, one vertex at a time,
+  // its half-edge ends as (pair, 2 h + side), sorted: grouped by pair. (Not one list of every half-edge
+  // end: its first touch of fresh memory was most of this function's time.)
   std::vector<std::size_t> first_at(diagram.vertices.size() + 1, 0);
-  for (const Half_edge& half : halves) {
-    const Diagram_edge& e = edges[half.edge];
+  for (const Diagram_edge& e : edges) {
     if (e.start) ++first_at[*e.start + 1];
     if (e.end) ++first_at[*e.end + 1];
   }
   for (std::size_t v = 0; v < diagram.vertices.size(); ++v) first_at[v + 1] += first_at[v];
-  std::vector<std::tuple<std::size_t, Pair, std::size_t>> at_vertex(first_at.back());
+  std::vector<std::size_t> edge_ends(first_at.back());
   {
     std::vector<std::size_t> next(first_at.begin(), first_at.end() - 1);
-    for (std::size_t h = 0; h < halves.size(); ++h) {
-      if (h % 4096 == 0) throw_if_cancelled(cancellation);
-      const Diagram_edge& e = edges[halves[h].edge];
-      if (e.start) at_vertex[next[*e.start]++] = {*e.start, halves[h].pair, 2 * h};
-      if (e.end) at_vertex[next[*e.end]++] = {*e.end, halves[h].pair, 2 * h + 1};
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (e % 4096 == 0) throw_if_cancelled(cancellation);
+      if (edges[e].start) edge_ends[next[*edges[e].start]++] = 2 * e;
+      if (edges[e].end) edge_ends[next[*edges[e].end]++] = 2 * e + 1;
     }
   }
-  for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
-    if (v % 4096 == 0) throw_if_cancelled(cancellation);
-    std::sort(at_vertex.begin() + static_cast<std::ptrdiff_t>(first_at[v]),
-              at_vertex.begin() + static_cast<std::ptrdiff_t>(first_at[v + 1]));
-  }
+  std::vector<std::pair<Pair, std::size_t>> at_vertex;  // of one vertex
   std::vector<std::size_t> ends;
-  for (std::size_t i = 0; i < at_vertex.size();) {
-    throw_if_cancelled(cancellation);
-    const std::size_t vertex = std::get<0>(at_vertex[i]);
-    const Pair pair = std::get<1>(at_vertex[i]);
-    ends.clear();
-    for (; i < at_vertex.size() && std::get<0>(at_vertex[i]) == vertex && std::get<1>(at_vertex[i]) == pair; ++i)
-      ends.push_back(std::get<2>(at_vertex[i]));
-    for (const auto& [x, y] : sectors_at_vertex(sites, diagram, edges, halves, vertex, pair, ends)) {
-      link[x / 2][x % 2] = y;
-      link[y / 2][y % 2] = x;
+  for (std::size_t vertex = 0; vertex < diagram.vertices.size(); ++vertex) {
+    if (vertex % 4096 == 0) throw_if_cancelled(cancellation);
+    at_vertex.clear();
+    for (std::size_t k = first_at[vertex]; k < first_at[vertex + 1]; ++k) {
+      const std::size_t e = edge_ends[k] / 2, side = edge_ends[k] % 2;
+      for (std::size_t h = first_half[e]; h < first_half[e + 1]; ++h) at_vertex.push_back({halves[h].pair, 2 * h + side});
+    }
+    std::sort(at_vertex.begin(), at_vertex.end());
+    for (std::size_t i = 0; i < at_vertex.size();) {
+      const Pair pair = at_vertex[i].first;
+      ends.clear();
+      for (; i < at_vertex.size() && at_vertex[i].first == pair; ++i) ends.push_back(at_vertex[i].second);
+      const auto join = [&](std::size_t x, std::size_t y) {
+        link[x / 2][x % 2] = y;
+        link[y / 2][y % 2] = x;
+      };
+      if (ends.size() == 2) {  // one sector: nearly every vertex and pair, with no allocation
+        join(ends[0], ends[1]);
+        continue;
+      }
+      for (const auto& [x, y] : sectors_at_vertex(sites, diagram, edges, halves, vertex, pair, ends)) join(x, y);
     }
   }
-  std::vector<std::tuple<std::size_t, Pair, std::size_t>>().swap(at_vertex);
+  std::vector<std::size_t>().swap(edge_ends);
 
   // Walk: from a half-edge out of its end side, until back at the start or at infinity; an open chain is
   // then extended from the start's other side.
@@ -151,7 +161,8 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
     Boundary_component c;
     c.a = halves[first].pair.first;
     c.b = halves[first].pair.second;
-    std::vector<std::size_t> forward{halves[first].edge};
+    std::vector<std::size_t>& forward = c.edges;  // the backward part of an open chain goes in front
+    forward.push_back(halves[first].edge);
     visited[first] = true;
     std::size_t h = first, side = 1;
     c.closed = true;
@@ -174,13 +185,13 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
         visited[h] = true;
         backward.push_back(halves[h].edge);
       }
-      c.edges.assign(backward.rbegin(), backward.rend());
+      c.edges.insert(c.edges.begin(), backward.rbegin(), backward.rend());
     }
-    c.edges.insert(c.edges.end(), forward.begin(), forward.end());
     components.push_back(std::move(c));
   }
+  // Components of one pair share no edge: their first edges order them as their lists do.
   cancellable_sort(components.begin(), components.end(), cancellation, [](const Boundary_component& x, const Boundary_component& y) {
-    return std::tie(x.a, x.b, x.edges) < std::tie(y.a, y.b, y.edges);
+    return std::tie(x.a, x.b, x.edges.front()) < std::tie(y.a, y.b, y.edges.front());
   });
   return components;
 }

@@ -4,6 +4,8 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -76,29 +78,41 @@ void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shap
 std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram, int threads,
                                                  const Cancellation* cancellation) {
   // Every (triple of a vertex's tie set, vertex), grouped by triple: each trisector is built once, for
-  // all the vertices on it (a generic one has two).
+  // all the vertices on it (a generic one has two). Written straight into buckets by smallest site (a
+  // counting pass first), then each bucket sorted: small entries, one pass over fresh memory; the list is
+  // a few times the vertices, and its first touch was most of this phase's time.
   struct Entry {
     std::array<Site_index, 3> triple;
-    std::size_t vertex;
-    std::array<std::size_t, 3> positions;  // of the triple's sites in the vertex's tie set
+    std::uint32_t vertex;
   };
-  std::vector<Entry> entries;
-  std::size_t total = 0;
-  for (const Diagram_vertex& v : diagram.vertices) {
-    const std::size_t k = v.tie_set.size();
-    total += k * (k - 1) * (k - 2) / 6;
-  }
-  entries.reserve(total);
+  if (diagram.vertices.size() > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("edges_through_vertices: more than 2^32 vertices");
+  std::vector<std::size_t> bucket_start(sites.size() + 1, 0);
   for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
     if (v % 4096 == 0) throw_if_cancelled(cancellation);
     const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
-    for (std::size_t i = 0; i < tie.size(); ++i)
-      for (std::size_t j = i + 1; j < tie.size(); ++j)
-        for (std::size_t l = j + 1; l < tie.size(); ++l) entries.push_back({{tie[i], tie[j], tie[l]}, v, {i, j, l}});
+    const std::size_t k = tie.size();
+    for (std::size_t i = 0; i + 2 < k; ++i) bucket_start[tie[i] + 1] += (k - 1 - i) * (k - 2 - i) / 2;
   }
-  bucketed_sort(
-      entries, sites.size(), [](const Entry& x) { return x.triple[0]; },
-      [](const Entry& x, const Entry& y) { return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex); }, cancellation);
+  for (std::size_t s = 0; s < sites.size(); ++s) bucket_start[s + 1] += bucket_start[s];
+  std::vector<Entry> entries(bucket_start.back());
+  {
+    std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+    for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
+      if (v % 4096 == 0) throw_if_cancelled(cancellation);
+      const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
+      for (std::size_t i = 0; i < tie.size(); ++i)
+        for (std::size_t j = i + 1; j < tie.size(); ++j)
+          for (std::size_t l = j + 1; l < tie.size(); ++l)
+            entries[next[tie[i]]++] = {{tie[i], tie[j], tie[l]}, static_cast<std::uint32_t>(v)};
+    }
+  }
+  for (std::size_t s = 0; s < sites.size(); ++s) {
+    if (s % 4096 == 0) throw_if_cancelled(cancellation);
+    std::sort(entries.begin() + static_cast<std::ptrdiff_t>(bucket_start[s]),
+              entries.begin() + static_cast<std::ptrdiff_t>(bucket_start[s + 1]),
+              [](const Entry& x, const Entry& y) { return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex); });
+  }
   std::vector<std::size_t> group_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
@@ -114,7 +128,11 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
       std::vector<Departure> departures;
       std::vector<std::size_t> vertex_of;  // of each departure
       for (std::size_t i = group_start[g]; i < group_start[g + 1]; ++i) {
-        departures_along(sites, diagram.vertices[entries[i].vertex], trisector, entries[i].positions, departures);
+        const Diagram_vertex& v = diagram.vertices[entries[i].vertex];
+        std::array<std::size_t, 3> positions{};  // of the triple's sites in the vertex's tie set
+        for (int m = 0; m < 3; ++m)
+          positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
+        departures_along(sites, v, trisector, positions, departures);
         vertex_of.resize(departures.size(), entries[i].vertex);
       }
       if (departures.empty()) return;

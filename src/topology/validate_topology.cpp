@@ -1,6 +1,7 @@
 #include "topology/validate_topology.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -9,7 +10,8 @@
 namespace apollonius {
 namespace {
 
-bool holds(const std::vector<Site_index>& set, const std::vector<Site_index>& subset) {
+template <class Subset>
+bool holds(const std::vector<Site_index>& set, const Subset& subset) {
   return std::includes(set.begin(), set.end(), subset.begin(), subset.end());
 }
 
@@ -19,7 +21,8 @@ bool holds(const std::vector<Site_index>& set, const std::vector<Site_index>& su
 
 void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t, const Cancellation* cancellation) {
   const std::vector<Diagram_vertex>& vertices = t.vertices.vertices;
-  std::vector<std::vector<Site_index>> covered(vertices.size());  // the sites of the edges at each vertex
+  // The sites of the edges at each vertex, flat: (vertex, site) placed by vertex (a count first).
+  std::vector<std::size_t> first_at(vertices.size() + 1, 0);
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     if (e % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_edge& edge = t.edges[e];
@@ -32,19 +35,30 @@ void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t
       if (!v) continue;
       if (*v >= vertices.size() || !holds(vertices[*v].tie_set, edge.tie_set))
         violated("edge " + std::to_string(e) + " ends at a vertex without its tie set");
-      covered[*v].insert(covered[*v].end(), edge.tie_set.begin(), edge.tie_set.end());
+      first_at[*v + 1] += edge.tie_set.size();
     }
+  }
+  for (std::size_t v = 0; v < vertices.size(); ++v) first_at[v + 1] += first_at[v];
+  std::vector<Site_index> covered(first_at.back());
+  {
+    std::vector<std::size_t> next(first_at.begin(), first_at.end() - 1);
+    for (const Diagram_edge& edge : t.edges)
+      for (const std::optional<std::size_t>& v : {edge.start, edge.end})
+        if (v)
+          for (Site_index s : edge.tie_set) covered[next[*v]++] = s;
   }
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     if (v % 4096 == 0) throw_if_cancelled(cancellation);
-    std::sort(covered[v].begin(), covered[v].end());
-    covered[v].erase(std::unique(covered[v].begin(), covered[v].end()), covered[v].end());
-    if (covered[v] != vertices[v].tie_set) violated("the edges at vertex " + std::to_string(v) + " miss one of its sites");
+    const auto first = covered.begin() + static_cast<std::ptrdiff_t>(first_at[v]);
+    const auto last = covered.begin() + static_cast<std::ptrdiff_t>(first_at[v + 1]);
+    std::sort(first, last);
+    if (!std::equal(first, std::unique(first, last), vertices[v].tie_set.begin(), vertices[v].tie_set.end()))
+      violated("the edges at vertex " + std::to_string(v) + " miss one of its sites");
   }
   for (std::size_t f = 0; f < t.faces.size(); ++f) {
     if (f % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_face& face = t.faces[f];
-    const std::vector<Site_index> pair{face.a, face.b};
+    const std::array<Site_index, 2> pair{face.a, face.b};
     for (const std::vector<std::size_t>& component : face.boundary) {
       if (component.empty()) violated("face " + std::to_string(f) + " has an empty boundary component");
       bool open = false;

@@ -1,6 +1,9 @@
 #include "topology/vertex_free.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <memory>
 #include <optional>
 
@@ -193,9 +196,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
       cancellation);
 
   // Candidate triples and pairs, where each was seen: (set, box) occurrences, sorted and grouped.
-  constexpr std::size_t kFar = static_cast<std::size_t>(-1);
-  std::vector<std::pair<Triple, std::size_t>> triple_seen;
-  std::vector<std::pair<Pair, std::size_t>> pair_seen;
+  // Box positions in 32 bits: the occurrence lists are the largest memory of this phase.
+  using Box_position = std::uint32_t;
+  constexpr Box_position kFar = std::numeric_limits<Box_position>::max();
+  if (regions.boxes.size() >= kFar) throw std::length_error("vertex_free_parts: 2^32 region boxes or more");
+  std::vector<std::pair<Triple, Box_position>> triple_seen;
+  std::vector<std::pair<Pair, Box_position>> pair_seen;
   // A vertex-free part that is unbounded has points of its sites' cells arbitrarily far: its sites all
   // escape (regions.escaping holds every site owning a point outside the root box). A bisector sheet is
   // unbounded, so an edge-free face (the whole sheet) has two escaping sites; so has a vertex-free
@@ -207,7 +213,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   // determinant is certainly positive (trisector_rows.h, in intervals from the box's pairwise power gaps):
   // such a triple is left out before the occurrences are sorted. On 1j3h 95% of the occurrences go.
   Pairwise_gaps gaps;
-  const auto note = [&](const auto& set, std::size_t box) {
+  const auto note = [&](const auto& set, Box_position box) {
     throw_if_cancelled(cancellation);
     const std::size_t size = set.size();
     bool gaps_known = false;
@@ -238,7 +244,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   triple_seen.reserve(triple_count);  // an upper bound: the pages left out are never touched
   {
     Rounding_guard guard;  // for the intervals of maybe_closed
-    for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, b);
+    for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, static_cast<Box_position>(b));
     for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
   }
   const auto grouped = [&](auto& seen, auto first_site, auto skip) {
