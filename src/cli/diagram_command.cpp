@@ -39,11 +39,13 @@ int run(const Diagram_command& command, std::ostream& out, std::ostream& err) {
     else
       write_diagram_json(o, topology, command.stats ? &stats : nullptr);
   });
+  const auto written = std::chrono::steady_clock::now();
   if (command.stats) {
     err << "predicate evaluations exact_stages\n";
     for (const Predicate_statistics& s : stats) err << s.name << ' ' << s.evaluations << ' ' << s.exact_stages << '\n';
     err << "phase seconds\nvertices " << std::chrono::duration<double>(after_vertices - start).count()
-        << "\ntopology " << std::chrono::duration<double>(end - after_vertices).count() << "\ndiagram count\nvertices "
+        << "\ntopology " << std::chrono::duration<double>(end - after_vertices).count()
+        << "\noutput " << std::chrono::duration<double>(written - end).count() << "\ndiagram count\nvertices "
         << topology.vertices.vertices.size() << "\nedges " << topology.edges.size() << "\nfaces " << topology.faces.size()
         << "\ncells " << topology.cells.size() << "\ntopology seconds\nedges " << topology.statistics.edges_seconds
         << "\nvertex_free " << topology.statistics.vertex_free_seconds << "\nfaces " << topology.statistics.faces_seconds
