@@ -20,7 +20,7 @@ namespace {
 struct Departure_on_curve {
   std::size_t vertex;
   int direction;
-  const std::vector<Site_index>* tie_set;
+  const Departure::Sites* tie_set;
 };
 
 std::string describe(const std::array<Site_index, 3>& triple) {
@@ -56,14 +56,14 @@ void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shap
       if (next != nullptr && *next->tie_set != *d.tie_set)
         throw std::logic_error("an edge changes its tie set along the trisector " + describe(trisector.indices()));
       Diagram_edge e;
-      e.tie_set = *d.tie_set;
+      e.tie_set.assign(d.tie_set->begin(), d.tie_set->end());
       e.curve = shape;
       e.start = d.vertex;
       if (next != nullptr) e.end = next->vertex;
       out.push_back(std::move(e));
     } else if (previous == nullptr) {  // arriving from infinity
       Diagram_edge e;
-      e.tie_set = *d.tie_set;
+      e.tie_set.assign(d.tie_set->begin(), d.tie_set->end());
       e.curve = shape;
       e.end = d.vertex;
       out.push_back(std::move(e));
@@ -118,36 +118,47 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
   group_start.push_back(entries.size());
 
-  std::vector<std::vector<Diagram_edge>> by_curve(group_start.size() - 1);
+  // Groups in chunks of consecutive curves, each chunk's edges in its own list: the output is the same
+  // for every thread count, and there is no list (nor scratch vectors) per curve.
+  constexpr std::size_t kCurvesPerChunk = 256;
+  const std::size_t curves = group_start.size() - 1;
+  std::vector<std::vector<Diagram_edge>> by_chunk((curves + kCurvesPerChunk - 1) / kCurvesPerChunk);
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, by_curve.size(), [&](std::size_t g) {
-      throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
-      const std::array<Site_index, 3>& triple = entries[group_start[g]].triple;
-      const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+    tbb::parallel_for(std::size_t{0}, by_chunk.size(), [&](std::size_t chunk) {
       std::vector<Departure> departures;
       std::vector<std::size_t> vertex_of;  // of each departure
-      for (std::size_t i = group_start[g]; i < group_start[g + 1]; ++i) {
-        const Diagram_vertex& v = diagram.vertices[entries[i].vertex];
-        std::array<std::size_t, 3> positions{};  // of the triple's sites in the vertex's tie set
-        for (int m = 0; m < 3; ++m)
-          positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
-        departures_along(sites, v, trisector, positions, departures);
-        vertex_of.resize(departures.size(), entries[i].vertex);
-      }
-      if (departures.empty()) return;
       std::vector<Departure_on_curve> on_curve;
-      for (std::size_t d = 0; d < departures.size(); ++d)
-        on_curve.push_back({vertex_of[d], departures[d].direction, &departures[d].tie_set});
-      const auto [kind, shape] = classify_trisector(trisector);
-      pair_departures(trisector, kind, shape, diagram, on_curve, by_curve[g]);
-      std::sort(by_curve[g].begin(), by_curve[g].end(), edge_precedes);
+      std::vector<Diagram_edge>& out = by_chunk[chunk];
+      for (std::size_t g = chunk * kCurvesPerChunk; g < std::min(curves, (chunk + 1) * kCurvesPerChunk); ++g) {
+        throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
+        const std::array<Site_index, 3>& triple = entries[group_start[g]].triple;
+        const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+        departures.clear();
+        vertex_of.clear();
+        for (std::size_t i = group_start[g]; i < group_start[g + 1]; ++i) {
+          const Diagram_vertex& v = diagram.vertices[entries[i].vertex];
+          std::array<std::size_t, 3> positions{};  // of the triple's sites in the vertex's tie set
+          for (int m = 0; m < 3; ++m)
+            positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
+          departures_along(sites, v, trisector, positions, departures);
+          vertex_of.resize(departures.size(), entries[i].vertex);
+        }
+        if (departures.empty()) continue;
+        on_curve.clear();
+        for (std::size_t d = 0; d < departures.size(); ++d)
+          on_curve.push_back({vertex_of[d], departures[d].direction, &departures[d].tie_set});
+        const auto [kind, shape] = classify_trisector(trisector);
+        const std::size_t first = out.size();
+        pair_departures(trisector, kind, shape, diagram, on_curve, out);
+        std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), edge_precedes);
+      }
     });
   });
   // Sorted: a tie set begins with its triple, so the tie sets of curves in ascending order of triple
   // ascend, and each curve's edges are sorted.
   std::vector<Diagram_edge> edges;
-  move_concatenated(by_curve, edges, cancellation);
+  move_concatenated(by_chunk, edges, cancellation);
   return edges;
 }
 

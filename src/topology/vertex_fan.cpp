@@ -29,11 +29,15 @@ void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, c
   if (!along.empty() && along.front() < triple[2]) return;
   if (forward && backward && along.size() + 3 == k)
     throw std::logic_error("departures_along: every tied site ties along one curve at a vertex");
-  std::vector<Site_index> tie_set(triple.begin(), triple.end());
-  tie_set.insert(tie_set.end(), along.begin(), along.end());
-  std::sort(tie_set.begin(), tie_set.end());
-  if (forward) out.push_back({triple, tie_set, +1});
-  if (backward) out.push_back({triple, std::move(tie_set), -1});
+  for (const int direction : {+1, -1}) {
+    if ((direction > 0 && !forward) || (direction < 0 && !backward)) continue;
+    Departure& d = out.emplace_back();  // built in place: each tie set inline, no copy
+    d.triple = triple;
+    d.direction = direction;
+    d.tie_set.assign(triple.begin(), triple.end());
+    for (Site_index s : along) d.tie_set.push_back(s);
+    std::sort(d.tie_set.begin(), d.tie_set.end());
+  }
 }
 
 }  // namespace apollonius

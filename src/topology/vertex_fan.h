@@ -9,6 +9,8 @@
 #include <array>
 #include <vector>
 
+#include <boost/container/small_vector.hpp>
+
 #include "diagram/diagram.h"
 #include "predicates/trisector.h"
 
@@ -16,8 +18,9 @@ namespace apollonius {
 
 // Invariants: triple is the three smallest sites of tie_set, which is ascending and lies in the vertex's.
 struct Departure {
+  using Sites = boost::container::small_vector<Site_index, 4>;  // inline: nearly every tie set has 3
   std::array<Site_index, 3> triple;
-  std::vector<Site_index> tie_set;
+  Sites tie_set;
   int direction = 0;  // +1: the edge leaves forward along the triple's trisector (trisector.h); -1: backward
 };
 
