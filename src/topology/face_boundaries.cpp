@@ -1,6 +1,8 @@
 #include "topology/face_boundaries.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -18,13 +20,14 @@ using Pair = std::pair<Site_index, Site_index>;
 
 Pair ordered(Site_index x, Site_index y) { return x < y ? Pair{x, y} : Pair{y, x}; }
 
+// 32-bit ids: the half-edges and their links are this function's largest memory (checked below).
 struct Half_edge {
-  std::size_t edge;
+  std::uint32_t edge;
   Pair pair;
 };
 
 // The pairs of consecutive sites around edge e, as half-edges appended to `halves`.
-void add_pairs_around(const std::vector<Site>& sites, const Diagram& diagram, const Diagram_edge& e, std::size_t id,
+void add_pairs_around(const std::vector<Site>& sites, const Diagram& diagram, const Diagram_edge& e, std::uint32_t id,
                       std::vector<Half_edge>& halves) {
   const std::vector<Site_index>& tie = e.tie_set;
   if (tie.size() == 3) {  // all three pairs (a tie set is ascending), with no allocation: nearly every edge
@@ -94,18 +97,23 @@ std::vector<std::array<std::size_t, 2>> sectors_at_vertex(const std::vector<Site
 std::vector<Boundary_component> boundary_components(const std::vector<Site>& sites, const Diagram& diagram,
                                                     const std::vector<Diagram_edge>& edges,
                                                     const Cancellation* cancellation) {
+  // Each edge has at most one half-edge per site of its tie set; their ends (2 h + side) fit in 32 bits.
+  std::size_t most_halves = 0;
+  for (const Diagram_edge& e : edges) most_halves += e.tie_set.size();
+  if (2 * most_halves + 1 >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("boundary_components: 2^31 half-edges or more");
   std::vector<Half_edge> halves;
   std::vector<std::size_t> first_half(edges.size() + 1, 0);  // edge e's half-edges: [first_half[e], first_half[e + 1])
   halves.reserve(3 * edges.size());  // three pairs around an edge of three tied sites
   for (std::size_t e = 0; e < edges.size(); ++e) {
     throw_if_cancelled(cancellation);
-    add_pairs_around(sites, diagram, edges[e], e, halves);
+    add_pairs_around(sites, diagram, edges[e], static_cast<std::uint32_t>(e), halves);
     first_half[e + 1] = halves.size();
   }
 
   // At each vertex, the half-edges of one pair come in twos: link their ends (side 0: start, 1: end).
-  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-  std::vector<std::array<std::size_t, 2>> link(halves.size(), {kNone, kNone});  // 2 h + side of the other end
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::array<std::uint32_t, 2>> link(halves.size(), {kNone, kNone});  // 2 h + side of the other end
   // The edge ends at each vertex (2 e + side), placed by vertex in linear time; then, one vertex at a time,
   // its half-edge ends as (pair, 2 h + side), sorted: grouped by pair. (Not one list of every half-edge
   // end: its first touch of fresh memory was most of this function's time.)
@@ -139,8 +147,8 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
       ends.clear();
       for (; i < at_vertex.size() && at_vertex[i].first == pair; ++i) ends.push_back(at_vertex[i].second);
       const auto join = [&](std::size_t x, std::size_t y) {
-        link[x / 2][x % 2] = y;
-        link[y / 2][y % 2] = x;
+        link[x / 2][x % 2] = static_cast<std::uint32_t>(y);
+        link[y / 2][y % 2] = static_cast<std::uint32_t>(x);
       };
       if (ends.size() == 2) {  // one sector: nearly every vertex and pair, with no allocation
         join(ends[0], ends[1]);
