@@ -119,10 +119,12 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   group_start.push_back(entries.size());
 
   // Groups in chunks of consecutive curves, each chunk's edges in its own list: the output is the same
-  // for every thread count, and there is no list (nor scratch vectors) per curve.
-  constexpr std::size_t kCurvesPerChunk = 256;
+  // for every thread count, and there is no list (nor scratch vectors) per curve. One thread: one chunk,
+  // which is the result (no copy; a generic vertex ends four edges, each with two ends).
   const std::size_t curves = group_start.size() - 1;
-  std::vector<std::vector<Diagram_edge>> by_chunk((curves + kCurvesPerChunk - 1) / kCurvesPerChunk);
+  const std::size_t curves_per_chunk = threads <= 1 ? std::max<std::size_t>(curves, 1) : 256;
+  std::vector<std::vector<Diagram_edge>> by_chunk((curves + curves_per_chunk - 1) / curves_per_chunk);
+  if (by_chunk.size() == 1) by_chunk.front().reserve(2 * diagram.vertices.size() + 16);
   tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, by_chunk.size(), [&](std::size_t chunk) {
@@ -130,7 +132,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
       std::vector<std::size_t> vertex_of;  // of each departure
       std::vector<Departure_on_curve> on_curve;
       std::vector<Diagram_edge>& out = by_chunk[chunk];
-      for (std::size_t g = chunk * kCurvesPerChunk; g < std::min(curves, (chunk + 1) * kCurvesPerChunk); ++g) {
+      for (std::size_t g = chunk * curves_per_chunk; g < std::min(curves, (chunk + 1) * curves_per_chunk); ++g) {
         throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
         const std::array<Site_index, 3>& triple = entries[group_start[g]].triple;
         const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
@@ -157,6 +159,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   });
   // Sorted: a tie set begins with its triple, so the tie sets of curves in ascending order of triple
   // ascend, and each curve's edges are sorted.
+  if (by_chunk.size() == 1) return std::move(by_chunk.front());
   std::vector<Diagram_edge> edges;
   move_concatenated(by_chunk, edges, cancellation);
   return edges;
