@@ -18,11 +18,6 @@ void Json_stream::flush() {
   used_ = 0;
 }
 
-char* Json_stream::room(std::size_t size) {
-  if (used_ + size > buffer_.size()) flush();
-  return buffer_.data() + used_;
-}
-
 void Json_stream::raw(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); i += buffer_.size()) {
     const std::size_t n = std::min(buffer_.size(), text.size() - i);
@@ -34,7 +29,7 @@ void Json_stream::member(std::string_view key) {
   raw(first_member_ ? "\n  " : ",\n  ");
   first_member_ = false;
   after_key_ = false;
-  first_in_.clear();
+  depth_ = 0, first_in_ = 0;
   quoted(key);  // as nlohmann dumps it
   raw(": ");
   after_key_ = true;
@@ -48,7 +43,7 @@ void Json_stream::begin_lines() {
 
 void Json_stream::line() {
   raw(lines_++ == 0 ? "\n    " : ",\n    ");
-  first_in_.clear();
+  depth_ = 0, first_in_ = 0;
   after_key_ = true;  // the element follows with no comma
 }
 
@@ -62,52 +57,11 @@ void Json_stream::finish() {
   out_.flush();
 }
 
-void Json_stream::separate() {
-  if (after_key_) {
-    after_key_ = false;
-    return;
-  }
-  if (first_in_.empty()) return;
-  if (first_in_.back()) {
-    first_in_.back() = false;
-    return;
-  }
-  *room(1) = ',', ++used_;
-}
-
-void Json_stream::begin_array() {
-  separate();
-  *room(1) = '[', ++used_;
-  first_in_.push_back(true);
-}
-
-void Json_stream::end_array() {
-  first_in_.pop_back();
-  *room(1) = ']', ++used_;
-}
-
-void Json_stream::begin_object() {
-  separate();
-  *room(1) = '{', ++used_;
-  first_in_.push_back(true);
-}
-
-void Json_stream::end_object() {
-  first_in_.pop_back();
-  *room(1) = '}', ++used_;
-}
-
 void Json_stream::key(std::string_view name) {
   separate();
   quoted(name);
   *room(1) = ':', ++used_;
   after_key_ = true;
-}
-
-void Json_stream::unsigned_number(std::uint64_t number) {
-  separate();
-  char* at = room(24);
-  used_ = static_cast<std::size_t>(std::to_chars(at, at + 24, number).ptr - buffer_.data());
 }
 
 void Json_stream::integer(long long number) {

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <array>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <ostream>
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
@@ -33,13 +35,18 @@ class Json_stream {
   // The top-level object's closing brace; flushes the buffer.
   void finish();
 
-  // Compact values (on the current line).
-  void begin_array();
-  void end_array();
-  void begin_object();
-  void end_object();
+  // Compact values (on the current line). The hot ones are inline: a protein's whole diagram is millions
+  // of them.
+  void begin_array() { open('['); }
+  void end_array() { close(']'); }
+  void begin_object() { open('{'); }
+  void end_object() { close('}'); }
   void key(std::string_view name);
-  void unsigned_number(std::uint64_t number);
+  void unsigned_number(std::uint64_t number) {
+    separate();
+    char* at = room(24);
+    used_ = static_cast<std::size_t>(std::to_chars(at, at + 24, number).ptr - buffer_.data());
+  }
   void integer(long long number);
   void boolean(bool truth);
   void string(std::string_view text);
@@ -54,8 +61,35 @@ class Json_stream {
   }
 
  private:
-  void separate();  // the comma before a value, unless it follows a key or opens its container
-  char* room(std::size_t size);  // at least size bytes at the buffer's end (the caller advances used_)
+  // The comma before a value, unless it follows a key or opens its container.
+  void separate() {
+    if (after_key_) {
+      after_key_ = false;
+      return;
+    }
+    if (depth_ == 0) return;
+    const std::uint64_t bit = std::uint64_t{1} << (depth_ - 1);
+    if (first_in_ & bit) {
+      first_in_ &= ~bit;
+      return;
+    }
+    *room(1) = ',', ++used_;
+  }
+  // At least size bytes at the buffer's end (the caller advances used_).
+  char* room(std::size_t size) {
+    if (used_ + size > buffer_.size()) flush();
+    return buffer_.data() + used_;
+  }
+  void open(char bracket) {
+    separate();
+    if (depth_ == kMaxDepth) throw std::length_error("Json_stream: containers nested more than 64 deep");
+    *room(1) = bracket, ++used_;
+    first_in_ |= std::uint64_t{1} << depth_++;
+  }
+  void close(char bracket) {
+    --depth_;
+    *room(1) = bracket, ++used_;
+  }
   void raw(std::string_view text);
   void quoted(std::string_view text);  // a string's JSON form, as nlohmann dumps it
   void flush();
@@ -65,7 +99,9 @@ class Json_stream {
   std::size_t used_ = 0;
   bool first_member_ = true, after_key_ = false;
   std::size_t lines_ = 0;
-  std::vector<bool> first_in_;  // per open compact container: nothing written in it yet
+  static constexpr int kMaxDepth = 64;
+  int depth_ = 0;               // open compact containers
+  std::uint64_t first_in_ = 0;  // bit d: nothing written yet in the open container at depth d
 };
 
 }  // namespace apollonius
