@@ -58,6 +58,12 @@ std::vector<Site> hole_between_two(std::size_t m, std::uint64_t seed) {
   return sites;
 }
 
+// APOLLONIUS_NESTING_SEEDS scales the generated inputs (default 4 per family, 40 holes).
+std::uint64_t seeds_per_family() {
+  const char* text = std::getenv("APOLLONIUS_NESTING_SEEDS");
+  return text != nullptr ? std::strtoull(text, nullptr, 10) : 4;
+}
+
 std::vector<Site> data_sites(const std::string& path) {
   return read_sites(std::string(APOLLONIUS_TEST_DATA) + "/" + path, {}).sites;
 }
@@ -67,14 +73,14 @@ std::vector<Site> data_sites(const std::string& path) {
 TEST_CASE("one closed cycle alone: one level line decides its face as the sweep of every slab does") {
   Counts counts;
   for (const std::string& name : site_family_names())
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-      const std::size_t n = 5 + 3 * seed;
+    for (std::uint64_t seed = 1; seed <= seeds_per_family(); ++seed) {
+      const std::size_t n = 5 + 3 * (1 + (seed - 1) % 4);
       CAPTURE(name);
       CAPTURE(n);
       CAPTURE(seed);
       compare_single_cycles(generate_sites(site_family_from_name(name), n, seed), counts);
     }
-  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 10 * seeds_per_family(); ++seed) {
     CAPTURE(seed);
     compare_single_cycles(hole_between_two(1 + seed % 8, seed), counts);
   }
