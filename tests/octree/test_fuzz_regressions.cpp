@@ -126,6 +126,23 @@ TEST_CASE("regression: octree_tiny_box_test_overflowed_beyond_1e152") {
   CHECK(statistics.boxes < 1000000);
 }
 
+// fuzz_vertices: seven small balls tie to first order seen along -z (z_i - w_i within 5e-16 of 0, two 5e-324
+// apart), so their cells run side by side down the -z axis at every scale, and a ball 4e266 away makes the
+// root box that large: every level between, 885 of them, refined about 1,800 boxes along the axis (1.6
+// million, 1.8 s; 24 s under the sanitizers). A box huge against its candidates' lifts is now settled once
+// its count stops dropping (box_refinement.cpp): 7,352. The same for the other input of the depth
+// limitation, 8 sites from 5e-324 to 3e180: 1.09 million boxes, now 3,900.
+TEST_CASE("regression: octree_depth_1e6_boxes") {
+  for (const char* name : {"octree_depth_1e6_boxes_for_7_balls_tied_along_an_axis_and_ball_at_4e266.balls",
+                           "octree_depth_1e6_boxes_for_8_sites_from_5e-324_to_3e180.balls"}) {
+    Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);
+    const Octree_statistics statistics = check_octree_equals_brute_force(name);
+    CAPTURE(name);
+    CHECK(statistics.boxes < 20000);
+    MESSAGE(std::string(name) << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
+  }
+}
+
 // fuzz_vertices: a dozen sites with subnormal coordinates and some near 1e50. The intervals could not place
 // their vertices against the many small boxes near them, and vertex_in_box's exact stage compared in
 // Q(sqrt d) each time: 5.5 s and 6.6 s. It now compares the correctly rounded coordinates first (0.7 s, 1.2 s).
