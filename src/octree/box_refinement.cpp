@@ -1,6 +1,7 @@
 #include "octree/box_refinement.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "octree/lift_span.h"
 #include "predicates/box_distance.h"
@@ -46,6 +47,19 @@ constexpr int kStagnationLevels = 4;
 // at every level; trying a point earlier gave the star (tie_point_star.h) boxes it separates worse (balls
 // tangent to one sphere, 1,000 of them: 1.4 s became 41 s), and a line cost its exact tests (below).
 constexpr int kStagnationToClassify = 1;
+// The converse of a tiny box: a box huge against its candidates (kTinyBox times the diameter of their
+// lifts (x, y, z, w), bounded by the per-coordinate ranges, shorter than its shortest side) is settled
+// once its count did not drop from its parent's (at most kStagnantCandidates; the leaf is decided exactly
+// whatever its size). At scales far above that diameter d_i - d_j tends to u.(x_j - x_i) - (w_i - w_j)
+// along each direction u from the cluster: the cells are nearly cones, and what halving separates is the
+// same pattern at every level, so refining repeats it once per binade down to the cluster. Candidates
+// tied to first order along one direction (z_i - w_i equal, seen along -z) keep their cells side by side
+// down that axis at every scale, and a box holding the cluster keeps all of it: a ball 4e266 away made
+// 885 levels of about 1,800 boxes (1.6 million; tests/data/regression/octree_depth_*). Complexity: below
+// the first box of at most kStagnantCandidates on a path, a huge box is refined only if its count
+// dropped, so at most kStagnantCandidates - kLeafCandidates huge levels are refined there, whatever the
+// spread of scales. A cluster of more candidates still descends one level per binade (docs/design.md).
+constexpr int kStagnationToSettleHuge = 1;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 2200;
@@ -146,8 +160,9 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
   if (kept >= 4) {
     stagnant = kept == end - first ? stagnant + 1 : 0;
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
-                         (stagnant >= kStagnationLevels && kept <= kStagnantCandidates &&
-                          tiny_against_candidates(box, end));
+                         (kept <= kStagnantCandidates &&
+                          ((stagnant >= kStagnationLevels && tiny_against_candidates(box, end)) ||
+                           (stagnant >= kStagnationToSettleHuge && huge_against_candidates(box, end))));
     if (!settled && kept > kLeafCandidates && tiny_against_candidates(box, end)) {
       const Tie tie = classify_tie(end, stagnant >= kStagnationToClassify);
       if (tie != Tie::none) {
@@ -233,6 +248,25 @@ bool Box_refinement<Kernel>::tiny_against_candidates(const Axis_box& box, std::s
   return std::all_of(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end(), [&](Site_index s) {
     return (squared_distance_to_box<Interval>(sites_[s], box, unit) - scaled_half_diagonal_squared).inf() > 0;
   });
+}
+
+template <class Kernel>
+bool Box_refinement<Kernel>::huge_against_candidates(const Axis_box& box, std::size_t first) const {
+  Rounding_guard guard;
+  const Interval unit(frame_of(box).unit);
+  const Site& some = sites_[stack_[first]];
+  std::array<double, 4> lo = {some.x, some.y, some.z, some.w}, hi = lo;
+  for (auto s = stack_.begin() + static_cast<std::ptrdiff_t>(first); s != stack_.end(); ++s) {
+    const std::array<double, 4> lifted = {sites_[*s].x, sites_[*s].y, sites_[*s].z, sites_[*s].w};
+    for (int a = 0; a < 4; ++a) lo[a] = std::min(lo[a], lifted[a]), hi[a] = std::max(hi[a], lifted[a]);
+  }
+  // kTinyBox times the lifts' diameter, squared, against the box's shortest extent, squared, in box units;
+  // an overflow to inf settles nothing.
+  Interval scaled_spread_squared(0);
+  for (int a = 0; a < 4; ++a) scaled_spread_squared += CGAL::square((Interval(hi[a]) - Interval(lo[a])) * unit * Interval(kTinyBox));
+  double scaled_shortest = std::numeric_limits<double>::infinity();  // a lower bound
+  for (int a = 0; a < 3; ++a) scaled_shortest = std::min(scaled_shortest, ((Interval(box.hi[a]) - Interval(box.lo[a])) * unit).inf());
+  return (CGAL::square(Interval(scaled_shortest)) - scaled_spread_squared).inf() > 0;
 }
 
 template <class Kernel>

@@ -62,6 +62,7 @@ class Box_refinement {
   // Moves the candidates that no witness dominates on the box to the end of stack_.
   void keep_undominated(const Axis_box& box, std::size_t first, std::size_t end);
   bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
+  bool huge_against_candidates(const Axis_box& box, std::size_t first) const;
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
   // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), or, if
   // at_point_too, their lifts and power lifts a 3-space (`on_one_line`: every tie among them lies on one

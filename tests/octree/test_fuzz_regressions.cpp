@@ -120,10 +120,28 @@ TEST_CASE("regression: octree_stagnation_enumerated_300_cospherical_sites") {
 // fuzz_vertices: seven small balls with x_i - w_i = 0 for all of them tie to first order seen from far
 // along -x, and one ball 1e240 away makes the root box that large. The test that settles stagnant boxes tiny
 // against their candidates squared box sizes beyond 1e152 to inf, so those boxes never settled and refined
-// for more than ten minutes. About 500 boxes per level of the 800 from 1e240 down to the balls remain.
+// for more than ten minutes. About 500 boxes per level of the 800 from 1e240 down to the balls remained
+// (397,218) until boxes huge against their candidates were settled (octree_depth_1e6_boxes, below): 746.
 TEST_CASE("regression: octree_tiny_box_test_overflowed_beyond_1e152") {
   const Octree_statistics statistics = check_octree_equals_brute_force("octree_tiny_box_test_overflowed_beyond_1e152.balls");
-  CHECK(statistics.boxes < 1000000);
+  CHECK(statistics.boxes < 5000);
+}
+
+// fuzz_vertices: seven small balls tie to first order seen along -z (z_i - w_i within 5e-16 of 0, two 5e-324
+// apart), so their cells run side by side down the -z axis at every scale, and a ball 4e266 away makes the
+// root box that large: every level between, 885 of them, refined about 1,800 boxes along the axis (1.6
+// million, 1.8 s; 24 s under the sanitizers). A box huge against its candidates' lifts is now settled once
+// its count stops dropping (box_refinement.cpp): 7,352. The same for the other input of the depth
+// limitation, 8 sites from 5e-324 to 3e180: 1.09 million boxes, now 3,900.
+TEST_CASE("regression: octree_depth_1e6_boxes") {
+  for (const char* name : {"octree_depth_1e6_boxes_for_7_balls_tied_along_an_axis_and_ball_at_4e266.balls",
+                           "octree_depth_1e6_boxes_for_8_sites_from_5e-324_to_3e180.balls"}) {
+    Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);
+    const Octree_statistics statistics = check_octree_equals_brute_force(name);
+    CAPTURE(name);
+    CHECK(statistics.boxes < 20000);
+    MESSAGE(std::string(name) << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
+  }
 }
 
 // fuzz_vertices: a dozen sites with subnormal coordinates and some near 1e50. The intervals could not place
@@ -137,8 +155,11 @@ TEST_CASE("regression: octree_exact_in_box_slow_for_subnormal_sites") {
 // fuzz_vertices: sites from 1e-158 to 4e291 refine 1.8 million boxes, and the vertices' intervals, wide
 // against the small boxes, failed vertex_in_box 7.7 million times: an exception and an exact stage each,
 // 14 s. Once a vertex's rounded point is known, vertex_in_box's static filter decides by it (1.4 s).
+// Settling boxes huge against their candidates (octree_depth_1e6_boxes above) took it to 8,122 boxes.
 TEST_CASE("regression: octree_in_box_exceptions_for_sites_from_1e-158_to_4e291") {
-  check_octree_equals_brute_force("octree_in_box_exceptions_for_sites_from_1e-158_to_4e291.balls");
+  const Octree_statistics statistics =
+      check_octree_equals_brute_force("octree_in_box_exceptions_for_sites_from_1e-158_to_4e291.balls");
+  CHECK(statistics.boxes < 20000);
 }
 
 // Issue 21: 13 sites tied at one point (every ball tangent to one sphere; coplanar balls tangent to one
