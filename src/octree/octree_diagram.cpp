@@ -122,19 +122,9 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
 
     found.resize(seeds.size());
     tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation);
-    // Per seed box, as the vertices: one list per thread would grow to millions of boxes, and each of its
-    // reallocations would move them all at once.
-    std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
     std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
-    if (options.regions != nullptr)
-      for (Site_index s : escaping) escapes[s] = true;
-    tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
-      throw_if_cancelled(options.cancellation);
-      Box_refinement<Kernel>& local = refinement.local();
-      if (options.regions != nullptr) local.record_regions(&seed_regions[k], &escapes);
-      local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
-    });
     if (options.regions != nullptr) {
+      for (Site_index s : escaping) escapes[s] = true;
       Octree_regions& r = *options.regions;
       r = {};
       r.has_octree = true;
@@ -146,8 +136,27 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
             region_box_needed(sites, c.data(), c.data() + c.size(), escapes))
           r.boxes.push_back({partition.box(id), Octree_regions::Sites(c.begin(), c.end())});
       }
-      // In the order of the seeds, each refined depth first: the same for every thread count, with no sort.
-      move_concatenated(seed_regions, r.boxes, options.cancellation);
+    }
+    // The regions follow the partition's boxes in the order of the seeds, each refined depth first: the
+    // same for every thread count, with no sort. One thread refines the seeds in order, straight into
+    // the regions; more keep a list per seed (one list per thread would grow to millions of boxes, and each
+    // reallocation would move them all at once), concatenated in order.
+    if (options.threads <= 1) {
+      Box_refinement<Kernel>& local = refinement.local();
+      if (options.regions != nullptr) local.record_regions(&options.regions->boxes, &escapes);
+      for (std::size_t k = 0; k < seeds.size(); ++k) {
+        throw_if_cancelled(options.cancellation);
+        local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+      }
+    } else {
+      std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
+      tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
+        throw_if_cancelled(options.cancellation);
+        Box_refinement<Kernel>& local = refinement.local();
+        if (options.regions != nullptr) local.record_regions(&seed_regions[k], &escapes);
+        local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+      });
+      if (options.regions != nullptr) move_concatenated(seed_regions, options.regions->boxes, options.cancellation);
     }
     for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();
