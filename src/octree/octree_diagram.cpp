@@ -141,20 +141,19 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     // same for every thread count, with no sort. One thread refines the seeds in order, straight into
     // the regions; more keep a list per seed (one list per thread would grow to millions of boxes, and each
     // reallocation would move them all at once), concatenated in order.
-    if (options.threads <= 1) {
+    const auto refine_seed = [&](std::size_t k, std::vector<Octree_regions::Box>* regions) {
+      throw_if_cancelled(options.cancellation);
       Box_refinement<Kernel>& local = refinement.local();
-      if (options.regions != nullptr) local.record_regions(&options.regions->boxes, &escapes);
-      for (std::size_t k = 0; k < seeds.size(); ++k) {
-        throw_if_cancelled(options.cancellation);
-        local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
-      }
+      if (regions != nullptr) local.record_regions(regions, &escapes);
+      local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+    };
+    if (options.threads <= 1) {
+      for (std::size_t k = 0; k < seeds.size(); ++k)
+        refine_seed(k, options.regions != nullptr ? &options.regions->boxes : nullptr);
     } else {
       std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
       tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
-        throw_if_cancelled(options.cancellation);
-        Box_refinement<Kernel>& local = refinement.local();
-        if (options.regions != nullptr) local.record_regions(&seed_regions[k], &escapes);
-        local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+        refine_seed(k, options.regions != nullptr ? &seed_regions[k] : nullptr);
       });
       if (options.regions != nullptr) move_concatenated(seed_regions, options.regions->boxes, options.cancellation);
     }

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "diagram/cancellable_steps.h"
+#include "diagram/flat_lists.h"
 #include "predicates/arc_witness.h"
 #include "predicates/sheet_fan.h"
 #include "predicates/trisector_predicates.h"
@@ -117,28 +118,22 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
   // The edge ends at each vertex (2 e + side), placed by vertex in linear time; then, one vertex at a time,
   // its half-edge ends as (pair, 2 h + side), sorted: grouped by pair. (Not one list of every half-edge
   // end: its first touch of fresh memory was most of this function's time.)
-  std::vector<std::size_t> first_at(diagram.vertices.size() + 1, 0);
-  for (const Diagram_edge& e : edges) {
-    if (e.start) ++first_at[*e.start + 1];
-    if (e.end) ++first_at[*e.end + 1];
-  }
-  for (std::size_t v = 0; v < diagram.vertices.size(); ++v) first_at[v + 1] += first_at[v];
-  std::vector<std::size_t> edge_ends(first_at.back());
-  {
-    std::vector<std::size_t> next(first_at.begin(), first_at.end() - 1);
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      if (e % 4096 == 0) throw_if_cancelled(cancellation);
-      if (edges[e].start) edge_ends[next[*edges[e].start]++] = 2 * e;
-      if (edges[e].end) edge_ends[next[*edges[e].end]++] = 2 * e + 1;
-    }
-  }
+  const Flat_lists<std::size_t> edge_ends(
+      diagram.vertices.size(),
+      [&](auto emit) {
+        for (std::size_t e = 0; e < edges.size(); ++e) {
+          if (edges[e].start) emit(*edges[e].start, 2 * e);
+          if (edges[e].end) emit(*edges[e].end, 2 * e + 1);
+        }
+      },
+      cancellation);
   std::vector<std::pair<Pair, std::size_t>> at_vertex;  // of one vertex
   std::vector<std::size_t> ends;
   for (std::size_t vertex = 0; vertex < diagram.vertices.size(); ++vertex) {
     if (vertex % 4096 == 0) throw_if_cancelled(cancellation);
     at_vertex.clear();
-    for (std::size_t k = first_at[vertex]; k < first_at[vertex + 1]; ++k) {
-      const std::size_t e = edge_ends[k] / 2, side = edge_ends[k] % 2;
+    for (const std::size_t end : edge_ends[vertex]) {
+      const std::size_t e = end / 2, side = end % 2;
       for (std::size_t h = first_half[e]; h < first_half[e + 1]; ++h) at_vertex.push_back({halves[h].pair, 2 * h + side});
     }
     std::sort(at_vertex.begin(), at_vertex.end());
@@ -157,7 +152,6 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
       for (const auto& [x, y] : sectors_at_vertex(sites, diagram, edges, halves, vertex, pair, ends)) join(x, y);
     }
   }
-  std::vector<std::size_t>().swap(edge_ends);
 
   // Walk: from a half-edge out of its end side, until back at the start or at infinity; an open chain is
   // then extended from the start's other side.

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "diagram/cancellable_steps.h"
+#include "diagram/flat_lists.h"
 #include "predicates/trisector_predicates.h"
 
 namespace apollonius {
@@ -87,32 +88,25 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   };
   if (diagram.vertices.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("edges_through_vertices: more than 2^32 vertices");
-  std::vector<std::size_t> bucket_start(sites.size() + 1, 0);
-  for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
-    if (v % 4096 == 0) throw_if_cancelled(cancellation);
-    const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
-    const std::size_t k = tie.size();
-    for (std::size_t i = 0; i + 2 < k; ++i) bucket_start[tie[i] + 1] += (k - 1 - i) * (k - 2 - i) / 2;
-  }
-  for (std::size_t s = 0; s < sites.size(); ++s) bucket_start[s + 1] += bucket_start[s];
-  std::vector<Entry> entries(bucket_start.back());
-  {
-    std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
-    for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
-      if (v % 4096 == 0) throw_if_cancelled(cancellation);
-      const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
-      for (std::size_t i = 0; i < tie.size(); ++i)
-        for (std::size_t j = i + 1; j < tie.size(); ++j)
-          for (std::size_t l = j + 1; l < tie.size(); ++l)
-            entries[next[tie[i]]++] = {{tie[i], tie[j], tie[l]}, static_cast<std::uint32_t>(v)};
-    }
-  }
+  Flat_lists<Entry> by_first_site(
+      sites.size(),
+      [&](auto emit) {
+        for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
+          const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
+          for (std::size_t i = 0; i < tie.size(); ++i)
+            for (std::size_t j = i + 1; j < tie.size(); ++j)
+              for (std::size_t l = j + 1; l < tie.size(); ++l)
+                emit(tie[i], Entry{{tie[i], tie[j], tie[l]}, static_cast<std::uint32_t>(v)});
+        }
+      },
+      cancellation);
   for (std::size_t s = 0; s < sites.size(); ++s) {
     if (s % 4096 == 0) throw_if_cancelled(cancellation);
-    std::sort(entries.begin() + static_cast<std::ptrdiff_t>(bucket_start[s]),
-              entries.begin() + static_cast<std::ptrdiff_t>(bucket_start[s + 1]),
+    const auto bucket = by_first_site[s];
+    std::sort(bucket.begin(), bucket.end(),
               [](const Entry& x, const Entry& y) { return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex); });
   }
+  const std::vector<Entry>& entries = by_first_site.values();
   std::vector<std::size_t> group_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);

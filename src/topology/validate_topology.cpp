@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "diagram/flat_lists.h"
 #include "topology/euler_characteristic.h"
 
 namespace apollonius {
@@ -21,8 +22,6 @@ bool holds(const std::vector<Site_index>& set, const Subset& subset) {
 
 void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t, const Cancellation* cancellation) {
   const std::vector<Diagram_vertex>& vertices = t.vertices.vertices;
-  // The sites of the edges at each vertex, flat: (vertex, site) placed by vertex (a count first).
-  std::vector<std::size_t> first_at(vertices.size() + 1, 0);
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     if (e % 4096 == 0) throw_if_cancelled(cancellation);
     const Diagram_edge& edge = t.edges[e];
@@ -35,24 +34,23 @@ void validate_topology(const std::vector<Site>& sites, const Diagram_topology& t
       if (!v) continue;
       if (*v >= vertices.size() || !holds(vertices[*v].tie_set, edge.tie_set))
         violated("edge " + std::to_string(e) + " ends at a vertex without its tie set");
-      first_at[*v + 1] += edge.tie_set.size();
     }
   }
-  for (std::size_t v = 0; v < vertices.size(); ++v) first_at[v + 1] += first_at[v];
-  std::vector<Site_index> covered(first_at.back());
-  {
-    std::vector<std::size_t> next(first_at.begin(), first_at.end() - 1);
-    for (const Diagram_edge& edge : t.edges)
-      for (const std::optional<std::size_t>& v : {edge.start, edge.end})
-        if (v)
-          for (Site_index s : edge.tie_set) covered[next[*v]++] = s;
-  }
+  Flat_lists<Site_index> covered(  // the sites of the edges at each vertex
+      vertices.size(),
+      [&](auto emit) {
+        for (const Diagram_edge& edge : t.edges)
+          for (const std::optional<std::size_t>& v : {edge.start, edge.end})
+            if (v)
+              for (Site_index s : edge.tie_set) emit(*v, s);
+      },
+      cancellation);
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     if (v % 4096 == 0) throw_if_cancelled(cancellation);
-    const auto first = covered.begin() + static_cast<std::ptrdiff_t>(first_at[v]);
-    const auto last = covered.begin() + static_cast<std::ptrdiff_t>(first_at[v + 1]);
-    std::sort(first, last);
-    if (!std::equal(first, std::unique(first, last), vertices[v].tie_set.begin(), vertices[v].tie_set.end()))
+    const auto sites_at = covered[v];
+    std::sort(sites_at.begin(), sites_at.end());
+    if (!std::equal(sites_at.begin(), std::unique(sites_at.begin(), sites_at.end()), vertices[v].tie_set.begin(),
+                    vertices[v].tie_set.end()))
       violated("the edges at vertex " + std::to_string(v) + " miss one of its sites");
   }
   for (std::size_t f = 0; f < t.faces.size(); ++f) {

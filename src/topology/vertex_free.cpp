@@ -12,6 +12,7 @@
 #include <tbb/task_arena.h>
 
 #include "diagram/cancellable_steps.h"
+#include "diagram/flat_lists.h"
 #include "predicates/arc_witness.h"
 #include "predicates/rational_between.h"
 #include "predicates/rounding_guard.h"
@@ -26,35 +27,22 @@ namespace {
 using Triple = std::array<Site_index, 3>;
 using Pair = std::pair<Site_index, Site_index>;
 
-// For each site, the ids (ascending) of the items whose site sets hold it: the items 0 to count - 1, whose
-// sets set_of(i) gives. Flat (one count pass, then one placing pass): a vector per site grew by doubling.
-class Items_by_site {
- public:
-  template <class Set_of>
-  Items_by_site(std::size_t site_count, std::size_t count, Set_of set_of, const Cancellation* cancellation)
-      : first_(site_count + 1, 0) {
-    for (std::size_t i = 0; i < count; ++i)
-      for (Site_index s : set_of(i)) ++first_[s + 1];
-    for (std::size_t s = 0; s < site_count; ++s) first_[s + 1] += first_[s];
-    items_.resize(first_.back());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for (std::size_t i = 0; i < count; ++i) {
-      if (i % 4096 == 0) throw_if_cancelled(cancellation);
-      for (Site_index s : set_of(i)) items_[next[s]++] = i;
-    }
-  }
-  struct Range {
-    const std::size_t* first;
-    const std::size_t* last;
-  };
-  Range operator[](Site_index s) const { return {items_.data() + first_[s], items_.data() + first_[s + 1]}; }
+// For each site, the ids (ascending) of the items whose site sets hold it.
+using Items_by_site = Flat_lists<std::size_t>;
+using Items = Items_by_site::Range<const std::size_t*>;
 
- private:
-  std::vector<std::size_t> first_;
-  std::vector<std::size_t> items_;
-};
+template <class Set_of>
+Items_by_site items_by_site(std::size_t site_count, std::size_t count, Set_of set_of, const Cancellation* cancellation) {
+  return Items_by_site(
+      site_count,
+      [&](auto emit) {
+        for (std::size_t i = 0; i < count; ++i)
+          for (Site_index s : set_of(i)) emit(s, i);
+      },
+      cancellation);
+}
 
-bool share(Items_by_site::Range x, Items_by_site::Range y) {
+bool share(Items x, Items y) {
   while (x.first != x.last && y.first != y.last) {
     if (*x.first == *y.first) return true;
     *x.first < *y.first ? ++x.first : ++y.first;
@@ -62,7 +50,7 @@ bool share(Items_by_site::Range x, Items_by_site::Range y) {
   return false;
 }
 
-bool share(Items_by_site::Range x, Items_by_site::Range y, Items_by_site::Range z) {
+bool share(Items x, Items y, Items z) {
   while (x.first != x.last && y.first != y.last && z.first != z.last) {
     const std::size_t top = std::max({*x.first, *y.first, *z.first});
     if (*x.first == top && *y.first == top && *z.first == top) return true;
@@ -206,7 +194,7 @@ class Located_witness {
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads,
                                     const Cancellation* cancellation) {
-  const Items_by_site vertices_of_site(
+  const Items_by_site vertices_of_site = items_by_site(
       sites.size(), diagram.vertices.size(), [&](std::size_t v) -> const auto& { return diagram.vertices[v].tie_set; },
       cancellation);
 
@@ -337,7 +325,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   std::vector<std::unique_ptr<Diagram_edge>>().swap(found);
 
   // The edges through vertices, then the vertex-free ones.
-  const Items_by_site edges_of_site(
+  const Items_by_site edges_of_site = items_by_site(
       sites.size(), edges.size() + parts.edges.size(),
       [&](std::size_t e) -> const auto& { return (e < edges.size() ? edges[e] : parts.edges[e - edges.size()]).tie_set; },
       cancellation);
