@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "measure/direction_range.h"
+#include "measure/exit_regions.h"
 #include "measure/gauss_kronrod_rule.h"
 
 namespace apollonius {
@@ -764,6 +766,20 @@ class Cell_integrator {
 
 Cell_cubature_result integrate_cell(const Site& site, const Cut_candidates& candidates, const Axis_box& box,
                                     const Cell_cubature_options& options) {
+  const double radius = options.clip_radius;
+  if (std::isfinite(radius) && !options.median_integrals && options.exit_regions) {
+    // The planes of the box must lie beyond the clip, where they are never the exit.
+    const Vector3 x{site.x, site.y, site.z};
+    bool beyond = true;
+    for (int a = 0; a < 3; ++a) beyond = beyond && box.hi[a] - x[a] >= radius && x[a] - box.lo[a] >= radius;
+    if (beyond)
+      if (std::optional<Cell_measure> measure = integrate_clipped_cell(candidates, radius, options.relative_tolerance)) {
+        Cell_cubature_result result;
+        result.measure = std::move(*measure);
+        result.largest_exit.fill(radius);
+        return result;
+      }
+  }
   return Cell_integrator(site, candidates, box, options).run();
 }
 

@@ -57,6 +57,9 @@ struct Cell_cubature_options {
   // False: only the volume and the boundary areas are integrated (contacts); the distance, direction and
   // Hessian integrals and the volume derivatives stay zero, which spares most of each ray's arithmetic.
   bool median_integrals = true;
+  // Clipped and without the median integrals: integrate along the boundaries of the regions of one exit
+  // (exit_regions.h) where that applies. False: always the line cubature below (the tests compare them).
+  bool exit_regions = true;
 };
 
 struct Cell_cubature_result {

@@ -1,0 +1,319 @@
+#include "measure/exit_regions.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "measure/gauss_kronrod_rule.h"
+#include "measure/orthonormal_frame.h"
+#include "predicates/unit_roundoff.h"
+
+namespace apollonius {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846, kTwoPi = 2 * kPi;
+// The cap tests that drop constraints leave this much angle for rounding: a constraint kept needlessly
+// costs time, not accuracy (its arc is then empty).
+constexpr double kAngleMargin = 1e-9;
+// Halvings of an arc at most (2^-30 of a circle is far below any tolerance's share).
+constexpr int kMaxDepth = 30;
+// The share of the tolerance that the arcs' quadrature aims at.
+constexpr double kArcShare = 1e-3;
+
+Vector3 cross(const Vector3& a, const Vector3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// 1 / t = a + b.u for the cut of site j (exit_regions.h); alpha and c as in radial_cut.h.
+struct Inverse_exit {
+  double a;
+  Vector3 b;
+  double alpha, c;
+  Site_index site;
+};
+
+// The cap m.u >= h (m a unit vector, -1 < h < 1) and its circle u(psi) = h m + rho (cos psi e1 + sin psi e2),
+// with (e1, e2, m) right-handed: increasing psi runs with the cap on its left.
+struct Cap {
+  Vector3 m;
+  double h, rho;
+  Vector3 e1, e2;
+};
+
+// Disjoint arcs [psi0, psi1] within [0, 2 pi] of one circle, with the uncertainty of each end (rounding,
+// amplified where the circles that end it are nearly tangent).
+struct Arc {
+  double begin, end, begin_uncertainty, end_uncertainty;
+};
+using Arcs = std::vector<Arc>;
+
+// Keeps the part of `arcs` within the circular interval [centre - half_width, centre + half_width], whose
+// ends are uncertain by `uncertainty`.
+void keep_within(Arcs& arcs, double centre, double half_width, double uncertainty, Arcs& scratch) {
+  double lo = centre - half_width;
+  lo -= kTwoPi * std::floor(lo / kTwoPi);
+  const double hi = lo + 2 * half_width;
+  const std::array<Arc, 2> pieces{{{lo, std::min(hi, kTwoPi), uncertainty, hi > kTwoPi ? 0.0 : uncertainty},
+                                   {0, hi - kTwoPi, 0, uncertainty}}};
+  const int count = hi > kTwoPi ? 2 : 1;
+  scratch.clear();
+  for (const Arc& arc : arcs)
+    for (int k = 0; k < count; ++k) {
+      const Arc& p = pieces[k];
+      Arc kept{std::max(arc.begin, p.begin), std::min(arc.end, p.end), 0, 0};
+      if (!(kept.begin < kept.end)) continue;
+      kept.begin_uncertainty = arc.begin >= p.begin ? arc.begin_uncertainty : p.begin_uncertainty;
+      kept.end_uncertainty = arc.end <= p.end ? arc.end_uncertainty : p.end_uncertainty;
+      scratch.push_back(kept);
+    }
+  arcs.swap(scratch);
+}
+
+// Integrals over one region: volume, face area, solid angle.
+struct Region_sums {
+  std::array<double, 3> value{}, error{}, magnitude{};
+  std::size_t nodes = 0;
+  bool reached = true;
+  bool touches_clip = false;  // some arc lies on the clip's circle: the sphere's region borders this one
+  bool empty = true;          // no arc at all: the region has no area
+};
+
+// The region of one cut: its axis frame and the closed forms of exit_regions.h.
+class Region {
+ public:
+  explicit Region(const Inverse_exit& e) : e_(e) {
+    beta_ = std::sqrt(dot(e.b, e.b));
+    axis_ = {e.b[0] / beta_, e.b[1] / beta_, e.b[2] / beta_};
+    std::tie(across_x_, across_y_) = orthonormal_complement(axis_);
+    top_ = e.a + beta_;
+    top_h_ = h_of(top_);
+    area_scale_ = 2 / std::sqrt(e.c);
+  }
+
+  // The three integrands at psi on the circle of `cap` (dphi / dpsi included).
+  std::array<double, 3> integrands(const Cap& cap, double psi) const {
+    const double cs = std::cos(psi), sn = std::sin(psi);
+    Vector3 u, du;
+    for (int k = 0; k < 3; ++k) {
+      u[k] = cap.h * cap.m[k] + cap.rho * (cs * cap.e1[k] + sn * cap.e2[k]);
+      du[k] = cap.rho * (cs * cap.e2[k] - sn * cap.e1[k]);
+    }
+    const double x = dot(u, across_x_), y = dot(u, across_y_), s = dot(u, axis_);
+    const double turn = (x * dot(du, across_y_) - y * dot(du, across_x_)) / (1 + s);
+    const double one_minus_s = (x * x + y * y) / (1 + s);
+    const double v = e_.a + beta_ * s;
+    const double volume = (2 * e_.a + beta_ + beta_ * s) / (6 * v * v * top_ * top_);
+    return {volume * turn, area_scale_ * area_difference(v, beta_ * one_minus_s) * turn, turn};
+  }
+
+ private:
+  // H(v), an antiderivative of v^-3 sqrt(1 + alpha v) (exit_regions.h).
+  double h_of(double v) const {
+    const double w = std::sqrt(std::max(0.0, 1 + e_.alpha * v));
+    const double rational = -w * (w * w + 1) / (4 * v * v);
+    if (e_.alpha == 0) return rational;
+    return rational + e_.alpha * e_.alpha / 8 * (2 * std::log1p(w) - std::log(std::fabs(e_.alpha) * v));
+  }
+  double h_derivative(double v) const { return std::sqrt(std::max(0.0, 1 + e_.alpha * v)) / (v * v * v); }
+
+  // (H(top) - H(v)) / (top - v), top - v = gap > 0: the closed form, or where the gap is small against v
+  // (where it would cancel) the mean of H' by 5-point Gauss-Legendre, whose error is of order (gap / v)^10.
+  double area_difference(double v, double gap) const {
+    if (gap > 0.05 * v) return (top_h_ - h_of(v)) / gap;
+    static constexpr std::array<double, 5> node{0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640,
+                                                -0.9061798459386640};
+    static constexpr std::array<double, 5> weight{0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                                                  0.2369268850561891, 0.2369268850561891};
+    double sum = 0;
+    for (int k = 0; k < 5; ++k) sum += weight[k] * h_derivative(v + 0.5 * gap * (1 + node[k]));
+    return 0.5 * sum;
+  }
+
+  Inverse_exit e_;
+  double beta_, top_, top_h_, area_scale_;
+  Vector3 axis_, across_x_, across_y_;
+};
+
+class Clipped_cell {
+ public:
+  Clipped_cell(std::vector<Inverse_exit> exits, double radius, double tolerance)
+      : exits_(std::move(exits)), radius_(radius), rule_(make_gauss_kronrod_rule<15>()) {
+    budget_ = {kArcShare * tolerance * radius * radius * radius, kArcShare * tolerance * radius * radius,
+               kArcShare * tolerance};
+  }
+
+  Region_sums region(std::size_t j) {
+    Region_sums sums;
+    const Inverse_exit& e = exits_[j];
+    caps_.clear();
+    // The clip first: L_j >= 1 / R. Empty when the cut never comes within R.
+    if (!add_cap(e.b, 1 / radius_ - e.a)) return sums;
+    const Cap clip = caps_.front();
+    const double clip_angle = std::acos(clip.h);
+    for (std::size_t k = 0; k < exits_.size(); ++k) {
+      if (k == j) continue;
+      const Inverse_exit& o = exits_[k];
+      const Vector3 n{e.b[0] - o.b[0], e.b[1] - o.b[1], e.b[2] - o.b[2]};
+      const double d = o.a - e.a;
+      const double norm = std::sqrt(dot(n, n));
+      if (norm == 0) {  // parallel planes L_j - L_k = -d: all, nothing, or the same exit (lower index wins)
+        if (d > 0 || (d == 0 && k < j)) return sums;
+        continue;
+      }
+      const double h = d / norm;
+      if (h <= -1) continue;
+      if (h >= 1) return sums;
+      const Vector3 m{n[0] / norm, n[1] / norm, n[2] / norm};
+      const double between = std::atan2(std::sqrt(dot(cross(m, clip.m), cross(m, clip.m))), dot(m, clip.m));
+      const double angle = std::acos(h);
+      if (between + clip_angle < angle - kAngleMargin) continue;  // holds all over the clip's cap
+      if (between > clip_angle + angle + kAngleMargin) return sums;  // misses the clip's cap
+      add_cap(n, d);
+    }
+    Region shape(e);
+    for (std::size_t q = 0; q < caps_.size(); ++q) {
+      const Cap& cap = caps_[q];
+      arcs_.assign(1, Arc{0, kTwoPi, 0, 0});
+      for (std::size_t l = 0; l < caps_.size() && !arcs_.empty(); ++l) {
+        if (l == q) continue;
+        const Cap& other = caps_[l];
+        const double A = cap.rho * dot(other.m, cap.e1), B = cap.rho * dot(other.m, cap.e2);
+        const double C = other.h - cap.h * dot(other.m, cap.m);
+        const double r = std::hypot(A, B);
+        if (r == 0) {  // concentric circles: the other holds everywhere on this one or nowhere
+          if (C > 0 || (C == 0 && other.m == cap.m && l < q)) arcs_.clear();
+          continue;
+        }
+        const double c = C / r;
+        if (c <= -1) continue;
+        if (c >= 1) {
+          arcs_.clear();
+          break;
+        }
+        // c and the centre err by a few rounding errors over r; acos amplifies them by 1 / sin(half width),
+        // up to sqrt(2 x error) where the circles are nearly tangent.
+        const double c_error = 16 * kUnitRoundoff * (1 + std::fabs(C) + r) / r;
+        const double half_width = std::acos(c), sine = std::sqrt((1 - c) * (1 + c));
+        const double uncertainty = c_error / std::max(sine, std::sqrt(2 * c_error)) + c_error;
+        keep_within(arcs_, std::atan2(B, A), half_width, uncertainty, scratch_);
+      }
+      if (q == 0 && !arcs_.empty()) sums.touches_clip = true;
+      if (!arcs_.empty()) sums.empty = false;
+      for (const Arc& arc : arcs_) {
+        integrate_arc(shape, cap, arc.begin, arc.end, 0, sums);
+        // An uncertain end leaves the boundary open by about that much of the integrand.
+        const std::array<double, 3> begin = shape.integrands(cap, arc.begin), end = shape.integrands(cap, arc.end);
+        for (int c = 0; c < 3; ++c)
+          sums.error[c] += std::fabs(begin[c]) * arc.begin_uncertainty + std::fabs(end[c]) * arc.end_uncertainty;
+      }
+    }
+    return sums;
+  }
+
+ private:
+  // Adds the cap n.u >= d; false if it is empty (then nothing is added).
+  bool add_cap(const Vector3& n, double d) {
+    const double norm = std::sqrt(dot(n, n));
+    const double h = d / norm;
+    if (!(h < 1)) return false;
+    Cap cap;
+    cap.m = {n[0] / norm, n[1] / norm, n[2] / norm};
+    cap.h = std::max(h, -1.0);
+    cap.rho = std::sqrt((1 - cap.h) * (1 + cap.h));
+    std::tie(cap.e1, cap.e2) = orthonormal_complement(cap.m);
+    caps_.push_back(cap);
+    return true;
+  }
+
+  void integrate_arc(const Region& shape, const Cap& cap, double p0, double p1, int depth, Region_sums& sums) {
+    const double half = 0.5 * (p1 - p0), middle = 0.5 * (p0 + p1);
+    std::array<double, 3> kronrod{}, gauss{}, magnitude{};
+    for (std::size_t k = 0; k < rule_.node.size(); ++k) {
+      const std::array<double, 3> f = shape.integrands(cap, middle + half * rule_.node[k]);
+      for (int c = 0; c < 3; ++c) {
+        kronrod[c] += rule_.kronrod[k] * f[c], gauss[c] += rule_.gauss[k] * f[c];
+        magnitude[c] += rule_.kronrod[k] * std::fabs(f[c]);
+      }
+    }
+    sums.nodes += rule_.node.size();
+    std::array<double, 3> error;
+    bool within = true;
+    for (int c = 0; c < 3; ++c) {
+      error[c] = half * std::fabs(kronrod[c] - gauss[c]);
+      within = within && error[c] <= budget_[c] * (p1 - p0) / kTwoPi;
+    }
+    if (!within && depth < kMaxDepth) {
+      integrate_arc(shape, cap, p0, middle, depth + 1, sums);
+      integrate_arc(shape, cap, middle, p1, depth + 1, sums);
+      return;
+    }
+    if (!within) sums.reached = false;
+    for (int c = 0; c < 3; ++c) {
+      sums.value[c] += half * kronrod[c];
+      sums.error[c] += error[c];
+      sums.magnitude[c] += half * magnitude[c];
+    }
+  }
+
+  std::vector<Inverse_exit> exits_;
+  double radius_;
+  Gauss_kronrod_rule rule_;
+  std::array<double, 3> budget_;
+  std::vector<Cap> caps_;
+  Arcs arcs_, scratch_;
+};
+
+}  // namespace
+
+std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candidates, double clip_radius,
+                                                   double relative_tolerance) {
+  for (double clearance : candidates.clearance)
+    if (clearance <= clip_radius * (1 + kClearanceMargin)) return std::nullopt;
+  std::vector<Inverse_exit> exits;
+  for (const Radial_cut& cut : candidates.cuts) {
+    if (!(cut.numerator > 0)) return std::nullopt;
+    if (cut.gap >= 2 * clip_radius) continue;  // never within the clip: its nearest point is at gap / 2
+    const double scale = 2 / cut.numerator;
+    exits.push_back({scale * cut.weight_step,
+                     {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
+                     cut.weight_step,
+                     cut.numerator,
+                     cut.site});
+  }
+  Clipped_cell cell(exits, clip_radius, relative_tolerance);
+  Cell_measure m;
+  const double R = clip_radius, R2 = R * R, R3 = R2 * R;
+  double solid = 0, solid_error = 0, solid_magnitude = 0, volume_magnitude = 0;
+  // The sphere's region is bounded by the clip arcs of the others: it is the whole sphere when there is no
+  // other region, and empty (its measures exactly 0, not the rounding of 4 pi minus the others) when there
+  // are some and none has a clip arc.
+  bool sphere_bordered = false, any_region = false;
+  for (std::size_t j = 0; j < exits.size(); ++j) {
+    const Region_sums sums = cell.region(j);
+    m.directions += sums.nodes;
+    sphere_bordered = sphere_bordered || sums.touches_clip;
+    any_region = any_region || !sums.empty;
+    m.reached_tolerance = m.reached_tolerance && sums.reached;
+    m.volume += sums.value[0], m.volume_error += sums.error[0];
+    volume_magnitude += sums.magnitude[0];
+    solid += sums.value[2], solid_error += sums.error[2], solid_magnitude += sums.magnitude[2];
+    if (sums.value[1] > 0)
+      m.contact_areas.push_back({exits[j].site, sums.value[1], sums.error[1] + 64 * kUnitRoundoff * sums.magnitude[1]});
+  }
+  const double sphere_solid = !any_region ? 4 * kPi : sphere_bordered ? std::max(0.0, 4 * kPi - solid) : 0.0;
+  const double solid_rounding = any_region && sphere_bordered ? 64 * kUnitRoundoff * (4 * kPi + solid_magnitude) : 0.0;
+  m.volume += R3 / 3 * sphere_solid;
+  m.volume_error += R3 / 3 * (solid_error + solid_rounding) + 64 * kUnitRoundoff * volume_magnitude;
+  m.sphere_area = R2 * sphere_solid;
+  m.sphere_area_error = R2 * (solid_error + solid_rounding);
+  m.cut_candidates = candidates.cuts.size();
+  std::sort(m.contact_areas.begin(), m.contact_areas.end(),
+            [](const Cell_measure::Face_area& x, const Cell_measure::Face_area& y) { return x.site < y.site; });
+  return m;
+}
+
+}  // namespace apollonius

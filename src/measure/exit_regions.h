@@ -1,0 +1,44 @@
+// A clipped cell's volume, face areas and sphere area by integrals along the boundaries of its regions of
+// one exit: the fast path of cell_cubature.h for contacts. APPROXIMATE, with an error estimate.
+//
+// Regions. Along the unit direction u from site i, site j cuts at t = c / (2 (alpha - u.D)) (radial_cut.h),
+// so 1 / t = L_j(u) = a_j + b_j.u is affine in u: a_j = 2 alpha / c, b_j = -2 D / c. The clipping sphere
+// has L = 1 / R. The cell's exit is 1 / max_k L_k(u), and the directions whose exit is k form
+// Omega_k = {u on S^2 : L_k(u) >= L_m(u) for every m}: the sphere cut by the planes L_k = L_m, a region
+// bounded by arcs of circles (a power diagram restricted to the sphere of directions).
+//
+// Integrals. On the region of cut j every integrand depends on u only through s = u.N, N = b_j / |b_j|
+// (towards site j: the face is a surface of revolution about that axis). In spherical coordinates (theta,
+// phi) about N, with G(theta) the integral of g(cos theta') sin theta' from 0 to theta, Stokes' theorem
+// gives: integral over Omega of g dOmega = integral along the boundary of Omega of G dphi. G(0) = 0 keeps
+// the form smooth at N, and -N is outside Omega_j (L_j(-N) = -2 / (|D| + alpha) < 0 < 1 / R), where it is
+// singular. With v = L = a + b s (b = |b_j|), G = (1 - s) D(s), D a divided difference in closed form:
+//   volume       g = v^-3 / 3:                         D = (2 a + b + b s) / (6 (a + b s)^2 (a + b)^2)
+//   face area    g = 2 c^-1/2 v^-3 sqrt(1 + alpha v):  D = 2 c^-1/2 (H(a + b) - H(v)) / (a + b - v),
+//                H(v) = -w (w^2 + 1) / (4 v^2) + alpha^2 / 8 ln((w + 1)^2 / (|alpha| v)), w = sqrt(1 + alpha v)
+//                (its derivative is v^-3 w; the area element is cell_cubature.h's, in terms of L)
+//   solid angle  g = 1:                                D = 1.
+// Along an arc dphi = (x y' - y x') / (x^2 + y^2) dpsi, x, y the coordinates across N, and x^2 + y^2 =
+// (1 - s)(1 + s), so the integrand D(s) (x y' - y x') / (1 + s) has no singularity at all on Omega_j.
+// The sphere's region is the rest: solid angle 4 pi minus the cuts', times R^2 its area, R^3 / 3 its volume.
+//
+// Quadrature. Each arc by Gauss-Kronrod 7/15 in its angle, halved while its estimate exceeds 1e-3 of the
+// tolerance (the integrands are analytic along an arc). Error estimate: the arcs' estimates, plus rounding
+// (the arcs' ends are computed, not exact: 64 unit roundoffs of the sum of the arcs' magnitudes).
+#pragma once
+
+#include <optional>
+
+#include "measure/cell_measures.h"
+#include "measure/cut_candidates.h"
+
+namespace apollonius {
+
+// The measures of the cell of a site bounded by its candidates' cuts and the sphere of radius clip_radius
+// about it: volume, sphere_area, contact_areas and their errors (the median integrals stay zero). Nothing
+// when this method does not apply: a cut with a zero numerator (a pair hidden in floating point), or a
+// candidate clearance within the clip (cut_candidates.h).
+std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candidates, double clip_radius,
+                                                   double relative_tolerance);
+
+}  // namespace apollonius
