@@ -16,9 +16,9 @@ namespace apollonius {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846, kTwoPi = 2 * kPi;
-// The cap tests that drop constraints leave this much angle for rounding: a constraint kept needlessly
-// costs time, not accuracy (its arc is then empty).
-constexpr double kAngleMargin = 1e-9;
+// The cap tests that drop constraints leave this much (in cosines) for rounding: a constraint kept
+// needlessly costs time, not accuracy (its arc is then empty).
+constexpr double kCosineMargin = 1e-9;
 // Halvings of an arc at most (2^-30 of a circle is far below any tolerance's share).
 constexpr int kMaxDepth = 30;
 // The share of the tolerance that the arcs' quadrature aims at.
@@ -153,7 +153,6 @@ class Clipped_cell {
     // The clip first: L_j >= 1 / R. Empty when the cut never comes within R.
     if (!add_cap(e.b, 1 / radius_ - e.a)) return sums;
     const Cap clip = caps_.front();
-    const double clip_angle = std::acos(clip.h);
     for (std::size_t k = 0; k < exits_.size(); ++k) {
       if (k == j) continue;
       const Inverse_exit& o = exits_[k];
@@ -168,10 +167,14 @@ class Clipped_cell {
       if (h <= -1) continue;
       if (h >= 1) return sums;
       const Vector3 m{n[0] / norm, n[1] / norm, n[2] / norm};
-      const double between = std::atan2(std::sqrt(dot(cross(m, clip.m), cross(m, clip.m))), dot(m, clip.m));
-      const double angle = std::acos(h);
-      if (between + clip_angle < angle - kAngleMargin) continue;  // holds all over the clip's cap
-      if (between > clip_angle + angle + kAngleMargin) return sums;  // misses the clip's cap
+      // With gamma the angle between the caps' centres and r, r0 their angular radii (cos r = h, sin r =
+      // rho): the clip's cap lies within this one when gamma + r0 <= r, and misses it when gamma >= r0 + r;
+      // compared as cosines (no trigonometry), with a margin for rounding.
+      const Vector3 normal = cross(m, clip.m);
+      const double cos_between = dot(m, clip.m), sin_between = std::sqrt(dot(normal, normal));
+      const double rho = std::sqrt((1 - h) * (1 + h));
+      if (cos_between >= -clip.h && cos_between * clip.h - sin_between * clip.rho > h + kCosineMargin) continue;
+      if (h >= -clip.h && cos_between < clip.h * h - clip.rho * rho - kCosineMargin) return sums;
       add_cap(n, d);
     }
     Region shape(e);
@@ -183,7 +186,7 @@ class Clipped_cell {
         const Cap& other = caps_[l];
         const double A = cap.rho * dot(other.m, cap.e1), B = cap.rho * dot(other.m, cap.e2);
         const double C = other.h - cap.h * dot(other.m, cap.m);
-        const double r = std::hypot(A, B);
+        const double r = std::sqrt(A * A + B * B);
         if (r == 0) {  // concentric circles: the other holds everywhere on this one or nowhere
           if (C > 0 || (C == 0 && other.m == cap.m && l < q)) arcs_.clear();
           continue;

@@ -14,6 +14,7 @@
 
 #include "mesh/edge_samples.h"
 #include "mesh/plane_mesher.h"
+#include "predicates/weighted_distance_at_point.h"
 
 namespace apollonius {
 namespace {
@@ -157,21 +158,20 @@ struct Builder {
     }
   }
 
-  // Whether a and b are nearer than every other active site at x (a point of their sheet).
+  // Whether no other active site is nearer than both a and b at x (a point of their sheet). Exact on x.
   bool pair_nearest(Site_index a, Site_index b, const Point3& x) const {
-    const double d = 0.5 * (weighted_distance(x, sites[a]) + weighted_distance(x, sites[b]));
     for (Site_index s : active_sites)
-      if (s != a && s != b && weighted_distance(x, sites[s]) < d) return false;
+      if (s != a && s != b && compare_weighted_distances(x, sites[s], sites[a]) == Sign::NEGATIVE &&
+          compare_weighted_distances(x, sites[s], sites[b]) == Sign::NEGATIVE)
+        return false;
     return true;
   }
 
+  // The nearest active site at x, the first in order on a tie. Exact on x.
   Site_index nearest_site(const Point3& x) const {
     Site_index best = active_sites.front();
-    double least = std::numeric_limits<double>::infinity();
-    for (Site_index s : active_sites) {
-      const double d = weighted_distance(x, sites[s]);
-      if (d < least) least = d, best = s;
-    }
+    for (Site_index s : active_sites)
+      if (compare_weighted_distances(x, sites[s], sites[best]) == Sign::NEGATIVE) best = s;
     return best;
   }
 
@@ -228,12 +228,8 @@ struct Builder {
     }
     input.inside = [&, c, any_unbounded](const Point2& p) {
       if (std::hypot(p[0] - c[0], p[1] - c[1]) >= cut_radius * 1.05) return false;
-      for (const auto& segments : bounded_segments) {
-        bool odd = false;
-        for (const auto& [u, v] : segments)
-          if ((u[1] > p[1]) != (v[1] > p[1]) && p[0] < u[0] + (p[1] - u[1]) * (v[0] - u[0]) / (v[1] - u[1])) odd = !odd;
-        if (odd) return true;
-      }
+      for (const auto& segments : bounded_segments)
+        if (odd_crossings(segments, p)) return true;
       return any_unbounded && pair_nearest(a, b, frame.lift(p));
     };
     input.lift = [&frame](const Point2& p) { return frame.lift(p); };
@@ -316,7 +312,16 @@ struct Builder {
   static constexpr int kProbe = 6;
   static int axis_of(int wall) { return wall / 2; }
   double bound_of(int wall) const { return wall % 2 ? box.hi[wall / 2] : box.lo[wall / 2]; }
-  // Positive outside the wall's half-space, or outside site s's ball of radius w_s + P.
+  // Which side of the wall's plane, or of site s's sphere of radius w_s + P, x lies on: positive outside.
+  // Exact on x (a difference of two doubles has the sign of their comparison).
+  Sign side(const Point3& x, int wall, Site_index s = 0) const {
+    if (wall == kProbe) return side_of_grown_ball(x, sites[s], options.probe);
+    const double d = outside(x, wall);
+    return d > 0 ? Sign::POSITIVE : d < 0 ? Sign::NEGATIVE : Sign::ZERO;
+  }
+
+  // Positive outside the wall's half-space, or outside site s's ball of radius w_s + P: the level that
+  // the constructions (Gauss-Newton) follow; side() decides.
   double outside(const Point3& x, int wall, Site_index s = 0) const {
     if (wall == kProbe) return distance(x, Point3{sites[s].x, sites[s].y, sites[s].z}) - sites[s].w - options.probe;
     return wall % 2 ? x[wall / 2] - box.hi[wall / 2] : box.lo[wall / 2] - x[wall / 2];
@@ -343,11 +348,11 @@ struct Builder {
       const Conic_curve curve(trisector);
       double lo = c.first, hi = c.second;
       const Site_index s = edge.tie_set[0];  // on the edge every site of its tie set is as near
-      const bool lo_outside = outside(points[std::min(u, v)], wall, s) > 0;
+      const bool lo_outside = side(points[std::min(u, v)], wall, s) == Sign::POSITIVE;
       for (int i = 0; i < 200 && lo != hi; ++i) {
         const double mid = 0.5 * (lo + hi);
         if (mid == lo || mid == hi) break;
-        ((outside(curve.position(mid), wall, s) > 0) == lo_outside ? lo : hi) = mid;
+        ((side(curve.position(mid), wall, s) == Sign::POSITIVE) == lo_outside ? lo : hi) = mid;
       }
       const double t = 0.5 * (lo + hi);
       x = curve.position(t);
@@ -363,12 +368,12 @@ struct Builder {
     const Point2 pu = frame.project(points[u]), pv = frame.project(points[v]);
     // Along the chord's projection: the crossing of the sheet with the plane.
     double lo = 0, hi = 1;
-    const bool u_outside = outside(points[u], wall, a) > 0;
+    const bool u_outside = side(points[u], wall, a) == Sign::POSITIVE;
     auto at = [&](double l) { return frame.lift({pu[0] + l * (pv[0] - pu[0]), pu[1] + l * (pv[1] - pu[1])}); };
     for (int i = 0; i < 200; ++i) {
       const double mid = 0.5 * (lo + hi);
       if (mid == lo || mid == hi) break;
-      ((outside(at(mid), wall, a) > 0) == u_outside ? lo : hi) = mid;
+      ((side(at(mid), wall, a) == Sign::POSITIVE) == u_outside ? lo : hi) = mid;
     }
     Point2 p{pu[0] + 0.5 * (lo + hi) * (pv[0] - pu[0]), pu[1] + 0.5 * (lo + hi) * (pv[1] - pu[1])};
     int other = -1;
@@ -406,10 +411,10 @@ struct Builder {
     std::vector<Mesh_triangle> kept;
     if (wall != kProbe)
       for (std::size_t i = 0; i < points.size(); ++i)
-        if (outside(points[i], wall) == 0) walls[i] = static_cast<std::uint8_t>(walls[i] | (1u << wall));
+        if (side(points[i], wall) == Sign::ZERO) walls[i] = static_cast<std::uint8_t>(walls[i] | (1u << wall));
     for (const Mesh_triangle& t : triangles) {
-      std::array<double, 3> s;
-      for (int k = 0; k < 3; ++k) s[k] = outside(points[t.vertices[k]], wall, static_cast<Site_index>(t.site_a));
+      std::array<int, 3> s;
+      for (int k = 0; k < 3; ++k) s[k] = to_int(side(points[t.vertices[k]], wall, static_cast<Site_index>(t.site_a)));
       if (s[0] <= 0 && s[1] <= 0 && s[2] <= 0) {
         kept.push_back(t);
         continue;
@@ -598,7 +603,7 @@ struct Builder {
     input.inside = [&](const Point2& p) {
       const Point3 x = frame.lift(p);
       if (options.has_probe) {
-        if (!(outside(x, kProbe, a) < 0)) return false;
+        if (side(x, kProbe, a) != Sign::NEGATIVE) return false;
       } else {
         for (int k = 0; k < 3; ++k)
           if (!(x[k] > box.lo[k] && x[k] < box.hi[k])) return false;
@@ -779,10 +784,20 @@ struct Builder {
         if (s != cell) margin = std::max(margin, own - weighted_distance(x, sites[s]));
       if (margin > best) best = margin, pole = u;
     }
-    if (rims.empty()) {
-      if (best < 0) mesh_whole_sphere(cell, radius);  // the whole sphere is in the cell
+    // Exactly, at the chosen point: whether another site is strictly nearer there than the cell's.
+    const auto outside_cell = [&](const Point3& x) {
+      for (Site_index s : active_sites)
+        if (s != cell && compare_weighted_distances(x, sites[s], c) == Sign::NEGATIVE) return true;
+      return false;
+    };
+    if (rims.empty()) {  // no face meets the sphere: it lies wholly in the cell or wholly out, as any point
+      if (!outside_cell(on_sphere(pole))) mesh_whole_sphere(cell, radius);
       return;
     }
+    // The chart needs its pole outside the cap; never assumed.
+    if (!outside_cell(on_sphere(pole)))
+      throw std::logic_error("mesh: no sample of the sphere of site " + std::to_string(cell) +
+                             " lies outside its cell, yet faces cross the sphere");
     // A right-handed frame (e1, e2, pole); the chart q = R (v.e1, v.e2) / (1 - v.pole), v the unit vector.
     const std::pair<Point3, Point3> frame = orthonormal_complement(pole);
     const Point3 e1 = frame.first, e2 = frame.second;
@@ -810,12 +825,7 @@ struct Builder {
     // The rims bound the cap, and the pole is outside it: the cap is the odd-parity side of the rims.
     std::vector<std::pair<Point2, Point2>> segments;
     for (const auto& line : input.polylines) segments.push_back({line.points[0], line.points[1]});
-    input.inside = [&segments](const Point2& p) {
-      bool odd = false;
-      for (const auto& [u, v] : segments)
-        if ((u[1] > p[1]) != (v[1] > p[1]) && p[0] < u[0] + (p[1] - u[1]) * (v[0] - u[0]) / (v[1] - u[1])) odd = !odd;
-      return odd;
-    };
+    input.inside = [&segments](const Point2& p) { return odd_crossings(segments, p); };
     input.lift = lift;
     input.density = [&](const Point2& q) {
       const double s2 = (q[0] * q[0] + q[1] * q[1]) / (radius * radius), f = 2 / (1 + s2);

@@ -275,4 +275,17 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
   return output;
 }
 
+bool odd_crossings(const std::vector<std::pair<Point2, Point2>>& segments, const Point2& p) {
+  const Point q(p[0], p[1]);
+  bool odd = false;
+  for (const auto& [u, v] : segments) {
+    const bool u_above = u[1] > p[1], v_above = v[1] > p[1];
+    if (u_above == v_above) continue;
+    // The segment crosses the line y = p[1]: right of p when p lies left of it going upwards.
+    const CGAL::Orientation side = CGAL::orientation(Point(u[0], u[1]), Point(v[0], v[1]), q);
+    if (side == (v_above ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN)) odd = !odd;
+  }
+  return odd;
+}
+
 }  // namespace apollonius

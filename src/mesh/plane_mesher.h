@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "mesh/bisector_frame.h"
@@ -49,5 +50,10 @@ struct Plane_mesh_output {
 };
 
 Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input);
+
+// Whether p is inside the closed polylines given as segments: an odd number of them cross the ray from p
+// towards +x. Exact on the doubles given (each crossing by an exact orientation test); a point on a
+// segment counts as outside of it.
+bool odd_crossings(const std::vector<std::pair<Point2, Point2>>& segments, const Point2& p);
 
 }  // namespace apollonius
