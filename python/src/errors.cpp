@@ -9,6 +9,7 @@
 #include "bindings.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "measure/exit_regions.h"
 
 namespace py = pybind11;
 
@@ -19,6 +20,8 @@ void bind_errors(py::module_& module) {
     try {
       if (exception) std::rethrow_exception(exception);
     } catch (const Input_error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const Unmeasurable_pair& e) {  // input beyond the measures' precision: exit 2 on the command line
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const Output_error& e) {
       PyErr_SetString(PyExc_OSError, e.what());

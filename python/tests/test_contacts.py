@@ -91,3 +91,11 @@ def test_bad_input_raises_the_command_lines_message(tmp_path):
     with pytest.raises(ValueError) as error:
         apollonius3d.read_sites(bad)
     assert str(error.value) == cli_error_message(err)
+
+
+def test_balls_too_close_to_measure_raise_value_error():
+    """Two balls 1e-12 apart (neither hiding the other): beyond the measures' doubles, as the command line's
+    exit 2 (tests/data/regression/contacts_hang_for_balls_2e-16_apart.balls)."""
+    with pytest.raises(ValueError) as error:
+        apollonius3d.contacts([[0, 0, 0], [1e-12, 0, 0]], [1, 1])
+    assert "balls 0 and 1 lie within 1e-10 of their probe-grown radius of each other" in str(error.value)

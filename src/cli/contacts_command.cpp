@@ -5,7 +5,9 @@
 
 #include "io/round_trip.h"
 #include "io/write_contacts.h"
+#include "io/input_error.h"
 #include "measure/contact_measures.h"
+#include "measure/exit_regions.h"
 
 namespace apollonius {
 namespace {
@@ -34,7 +36,13 @@ int run(const Contacts_command& command, std::ostream& out, std::ostream& err) {
   options.relative_tolerance = command.tolerance;
   options.threads = command.diagram.threads;
   const auto start = std::chrono::steady_clock::now();
-  const Contact_measures measures = measure_contacts(input.sites, options);
+  Contact_measures measures;
+  try {
+    measures = measure_contacts(input.sites, options);
+  } catch (const Unmeasurable_pair& e) {
+    const std::size_t line = input.lines.empty() ? 0 : input.lines[e.b];
+    throw Input_error(command.input, line, e.what());
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_command_output(command.output, out, [&](std::ostream& o) {
     if (command.format == "json")

@@ -14,6 +14,7 @@
 #include "diagram/site_set.h"
 #include "measure/cell_cubature.h"
 #include "measure/cut_candidates.h"
+#include "measure/exit_regions.h"
 #include "predicates/kernels.h"
 
 namespace apollonius {
@@ -110,6 +111,8 @@ Contact_measures measure_contacts(const std::vector<Site>& sites, const Contact_
         const double reach = (radius + o.w + options.probe) * (1 + kClearanceMargin);
         if (dx * dx + dy * dy + dz * dz <= reach * reach) candidates.cuts.push_back(Radial_cut::between(s, o, j));
       });
+      for (const Radial_cut& cut : candidates.cuts)
+        if (too_close_to_measure(cut, radius)) throw Unmeasurable_pair(i, cut.site);
       std::sort(candidates.cuts.begin(), candidates.cuts.end(),
                 [](const Radial_cut& x, const Radial_cut& y) { return x.site < y.site; });
       // A box twice the clip's size: its planes are never the nearest exit.

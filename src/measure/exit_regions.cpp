@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -19,8 +20,11 @@ constexpr double kPi = 3.14159265358979323846, kTwoPi = 2 * kPi;
 // The cap tests that drop constraints leave this much (in cosines) for rounding: a constraint kept
 // needlessly costs time, not accuracy (its arc is then empty).
 constexpr double kCosineMargin = 1e-9;
-// Halvings of an arc at most (2^-30 of a circle is far below any tolerance's share).
+// Halvings of an arc at most (2^-30 of a circle is far below any tolerance's share), and arc panels per
+// cell beyond which every panel is accepted as it is (reached_tolerance is then false and the estimates
+// say by how much): the halvings cannot multiply without bound where rounding defeats the rule.
 constexpr int kMaxDepth = 30;
+constexpr std::size_t kMaxPanels = 20000;
 // The share of the tolerance that the arcs' quadrature aims at.
 constexpr double kArcShare = 1e-3;
 
@@ -42,6 +46,7 @@ struct Cap {
   Vector3 m;
   double h, rho;
   Vector3 e1, e2;
+  bool clip = false;  // the clip's circle: m is the region's axis N, so u.N = h there exactly
 };
 
 // Disjoint arcs [psi0, psi1] within [0, 2 pi] of one circle, with the uncertainty of each end (rounding,
@@ -90,51 +95,66 @@ class Region {
     axis_ = {e.b[0] / beta_, e.b[1] / beta_, e.b[2] / beta_};
     std::tie(across_x_, across_y_) = orthonormal_complement(axis_);
     top_ = e.a + beta_;
-    top_h_ = h_of(top_);
+    std::tie(top_h_, top_h_magnitude_) = h_of(top_);
     area_scale_ = 2 / std::sqrt(e.c);
   }
 
-  // The three integrands at psi on the circle of `cap` (dphi / dpsi included).
-  std::array<double, 3> integrands(const Cap& cap, double psi) const {
+  // The three integrands at psi on the circle of `cap` (dphi / dpsi included), and a fourth: the magnitude
+  // whose rounding the area's value carries (its closed form cancels; exit_regions.h).
+  std::array<double, 4> integrands(const Cap& cap, double psi) const {
     const double cs = std::cos(psi), sn = std::sin(psi);
     Vector3 u, du;
     for (int k = 0; k < 3; ++k) {
       u[k] = cap.h * cap.m[k] + cap.rho * (cs * cap.e1[k] + sn * cap.e2[k]);
       du[k] = cap.rho * (cs * cap.e2[k] - sn * cap.e1[k]);
     }
-    const double x = dot(u, across_x_), y = dot(u, across_y_), s = dot(u, axis_);
+    // On the clip's circle L = 1 / R: s from its definition, not from u (whose rounding |b| amplifies).
+    const double x = dot(u, across_x_), y = dot(u, across_y_), s = cap.clip ? cap.h : dot(u, axis_);
     const double turn = (x * dot(du, across_y_) - y * dot(du, across_x_)) / (1 + s);
     const double one_minus_s = (x * x + y * y) / (1 + s);
     const double v = e_.a + beta_ * s;
     const double volume = (2 * e_.a + beta_ + beta_ * s) / (6 * v * v * top_ * top_);
-    return {volume * turn, area_scale_ * area_difference(v, beta_ * one_minus_s) * turn, turn};
+    double cancelled;
+    const double area = area_scale_ * area_difference(v, beta_ * one_minus_s, cancelled) * turn;
+    return {volume * turn, area, turn, area_scale_ * cancelled * std::fabs(turn)};
   }
 
  private:
-  // H(v), an antiderivative of v^-3 sqrt(1 + alpha v) (exit_regions.h).
-  double h_of(double v) const {
+  // H(v), an antiderivative of v^-3 sqrt(1 + alpha v) (exit_regions.h), and the magnitude of its terms.
+  std::pair<double, double> h_of(double v) const {
     const double w = std::sqrt(std::max(0.0, 1 + e_.alpha * v));
     const double rational = -w * (w * w + 1) / (4 * v * v);
-    if (e_.alpha == 0) return rational;
-    return rational + e_.alpha * e_.alpha / 8 * (2 * std::log1p(w) - std::log(std::fabs(e_.alpha) * v));
+    if (e_.alpha == 0) return {rational, std::fabs(rational)};
+    const double logarithmic = e_.alpha * e_.alpha / 8 * (2 * std::log1p(w) - std::log(std::fabs(e_.alpha) * v));
+    return {rational + logarithmic, std::fabs(rational) + std::fabs(logarithmic)};
   }
   double h_derivative(double v) const { return std::sqrt(std::max(0.0, 1 + e_.alpha * v)) / (v * v * v); }
 
-  // (H(top) - H(v)) / (top - v), top - v = gap > 0: the closed form, or where the gap is small against v
-  // (where it would cancel) the mean of H' by 5-point Gauss-Legendre, whose error is of order (gap / v)^10.
-  double area_difference(double v, double gap) const {
-    if (gap > 0.05 * v) return (top_h_ - h_of(v)) / gap;
+  // (H(top) - H(v)) / (top - v), top - v = gap > 0: the closed form, or where the gap is small (where it
+  // would cancel) the mean of H' by 5-point Gauss-Legendre. H' = v^-3 sqrt(1 + alpha v) is singular at 0
+  // and, for alpha < 0, at -1 / alpha, beyond top; with the gap below 0.05 of the distance to both, the
+  // rule's error is of order 0.025^10.
+  // `cancelled`: the magnitude of what was subtracted, over the gap (the value's rounding is about 4
+  // roundoffs of it).
+  double area_difference(double v, double gap, double& cancelled) const {
+    const double reach = e_.alpha < 0 ? std::min(v, (1 + e_.alpha * v) / -e_.alpha) : v;
+    if (!(gap <= 0.05 * reach)) {
+      const auto [h, magnitude] = h_of(v);
+      cancelled = (top_h_magnitude_ + magnitude) / gap;
+      return (top_h_ - h) / gap;
+    }
     static constexpr std::array<double, 5> node{0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640,
                                                 -0.9061798459386640};
     static constexpr std::array<double, 5> weight{0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
                                                   0.2369268850561891, 0.2369268850561891};
     double sum = 0;
     for (int k = 0; k < 5; ++k) sum += weight[k] * h_derivative(v + 0.5 * gap * (1 + node[k]));
+    cancelled = 0.5 * sum;
     return 0.5 * sum;
   }
 
   Inverse_exit e_;
-  double beta_, top_, top_h_, area_scale_;
+  double beta_, top_, top_h_, top_h_magnitude_, area_scale_;
   Vector3 axis_, across_x_, across_y_;
 };
 
@@ -152,6 +172,7 @@ class Clipped_cell {
     caps_.clear();
     // The clip first: L_j >= 1 / R. Empty when the cut never comes within R.
     if (!add_cap(e.b, 1 / radius_ - e.a)) return sums;
+    caps_.front().clip = true;
     const Cap clip = caps_.front();
     for (std::size_t k = 0; k < exits_.size(); ++k) {
       if (k == j) continue;
@@ -198,10 +219,11 @@ class Clipped_cell {
           break;
         }
         // c and the centre err by a few rounding errors over r; acos amplifies them by 1 / sin(half width),
-        // up to sqrt(2 x error) where the circles are nearly tangent.
+        // up to sqrt(2 x error) where the circles are nearly tangent; the frames and the angles themselves
+        // add some 32 rounding errors of a radian.
         const double c_error = 16 * kUnitRoundoff * (1 + std::fabs(C) + r) / r;
         const double half_width = std::acos(c), sine = std::sqrt((1 - c) * (1 + c));
-        const double uncertainty = c_error / std::max(sine, std::sqrt(2 * c_error)) + c_error;
+        const double uncertainty = c_error / std::max(sine, std::sqrt(2 * c_error)) + c_error + 32 * kUnitRoundoff;
         keep_within(arcs_, std::atan2(B, A), half_width, uncertainty, scratch_);
       }
       if (q == 0 && !arcs_.empty()) sums.touches_clip = true;
@@ -209,7 +231,7 @@ class Clipped_cell {
       for (const Arc& arc : arcs_) {
         integrate_arc(shape, cap, arc.begin, arc.end, 0, sums);
         // An uncertain end leaves the boundary open by about that much of the integrand.
-        const std::array<double, 3> begin = shape.integrands(cap, arc.begin), end = shape.integrands(cap, arc.end);
+        const std::array<double, 4> begin = shape.integrands(cap, arc.begin), end = shape.integrands(cap, arc.end);
         for (int c = 0; c < 3; ++c)
           sums.error[c] += std::fabs(begin[c]) * arc.begin_uncertainty + std::fabs(end[c]) * arc.end_uncertainty;
       }
@@ -236,10 +258,10 @@ class Clipped_cell {
     const double half = 0.5 * (p1 - p0), middle = 0.5 * (p0 + p1);
     std::array<double, 3> kronrod{}, gauss{}, magnitude{};
     for (std::size_t k = 0; k < rule_.node.size(); ++k) {
-      const std::array<double, 3> f = shape.integrands(cap, middle + half * rule_.node[k]);
+      const std::array<double, 4> f = shape.integrands(cap, middle + half * rule_.node[k]);
       for (int c = 0; c < 3; ++c) {
         kronrod[c] += rule_.kronrod[k] * f[c], gauss[c] += rule_.gauss[k] * f[c];
-        magnitude[c] += rule_.kronrod[k] * std::fabs(f[c]);
+        magnitude[c] += rule_.kronrod[k] * (c == 1 ? f[3] : std::fabs(f[c]));
       }
     }
     sums.nodes += rule_.node.size();
@@ -249,7 +271,7 @@ class Clipped_cell {
       error[c] = half * std::fabs(kronrod[c] - gauss[c]);
       within = within && error[c] <= budget_[c] * (p1 - p0) / kTwoPi;
     }
-    if (!within && depth < kMaxDepth) {
+    if (!within && depth < kMaxDepth && ++panels_ <= kMaxPanels) {
       integrate_arc(shape, cap, p0, middle, depth + 1, sums);
       integrate_arc(shape, cap, middle, p1, depth + 1, sums);
       return;
@@ -268,9 +290,21 @@ class Clipped_cell {
   std::array<double, 3> budget_;
   std::vector<Cap> caps_;
   Arcs arcs_, scratch_;
+  std::size_t panels_ = 0;  // halvings so far, in the whole cell
 };
 
 }  // namespace
+
+Unmeasurable_pair::Unmeasurable_pair(Site_index site_a, Site_index site_b)
+    : std::runtime_error("balls " + std::to_string(std::min(site_a, site_b)) + " and " +
+                         std::to_string(std::max(site_a, site_b)) +
+                         " lie within 1e-10 of their probe-grown radius of each other, neither hiding the other: "
+                         "their face passes through the ball's centre, beyond what double precision measures"),
+      a(std::min(site_a, site_b)), b(std::max(site_a, site_b)) {}
+
+bool too_close_to_measure(const Radial_cut& cut, double clip_radius) {
+  return 2 * std::sqrt(dot(cut.offset, cut.offset)) * clip_radius > 1e10 * cut.numerator;
+}
 
 std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candidates, double clip_radius,
                                                    double relative_tolerance) {
@@ -281,6 +315,7 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
     if (!(cut.numerator > 0)) return std::nullopt;
     if (cut.gap >= 2 * clip_radius) continue;  // never within the clip: its nearest point is at gap / 2
     const double scale = 2 / cut.numerator;
+    if (too_close_to_measure(cut, clip_radius)) return std::nullopt;
     exits.push_back({scale * cut.weight_step,
                      {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
                      cut.weight_step,
@@ -296,7 +331,12 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
   // are some and none has a clip arc.
   bool sphere_bordered = false, any_region = false;
   for (std::size_t j = 0; j < exits.size(); ++j) {
-    const Region_sums sums = cell.region(j);
+    Region_sums sums = cell.region(j);
+    // Rounding, amplified by the region's conditioning: u.N errs by about 1e-16 and L = a + b.u with it
+    // by |b| 1e-16 against L >= 1 / R, so each value by about |b| R of its magnitude's rounding.
+    const Vector3& b = exits[j].b;
+    const double condition = 1 + std::sqrt(dot(b, b)) * clip_radius;
+    for (int c = 0; c < 3; ++c) sums.magnitude[c] *= condition;
     m.directions += sums.nodes;
     sphere_bordered = sphere_bordered || sums.touches_clip;
     any_region = any_region || !sums.empty;

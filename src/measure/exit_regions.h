@@ -28,16 +28,29 @@
 #pragma once
 
 #include <optional>
+#include <stdexcept>
 
 #include "measure/cell_measures.h"
 #include "measure/cut_candidates.h"
 
 namespace apollonius {
 
+// Two balls too close for the measures in doubles: within about 1e-10 R of each other (R = w + P), neither
+// hiding the other. Their face then passes within rounding of the site, where the inverse exit's gradient
+// |b| = 2 |D| / c is beyond 1e10 / R.
+struct Unmeasurable_pair : std::runtime_error {
+  Unmeasurable_pair(Site_index a, Site_index b);
+  Site_index a, b;  // a < b
+};
+
+// Whether `cut` is such a pair at this clip: |b| R = 2 |D| R / c > 1e10, where the rounding of u.N (about
+// 1e-16) would move L = a + b.u by more than 1e-6 of its value 1 / R on the clip.
+bool too_close_to_measure(const Radial_cut& cut, double clip_radius);
+
 // The measures of the cell of a site bounded by its candidates' cuts and the sphere of radius clip_radius
 // about it: volume, sphere_area, contact_areas and their errors (the median integrals stay zero). Nothing
-// when this method does not apply: a cut with a zero numerator (a pair hidden in floating point), or a
-// candidate clearance within the clip (cut_candidates.h).
+// when this method does not apply: a cut with a zero numerator (a pair hidden in floating point), a cut too
+// close to measure, or a candidate clearance within the clip (cut_candidates.h).
 std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candidates, double clip_radius,
                                                    double relative_tolerance);
 

@@ -77,3 +77,17 @@ TEST_CASE("contacts: bad parameters and input are exit 2 with no output file") {
   }
   CHECK(run({"contacts", bad}).err.find("bad.txt:2:") != std::string::npos);
 }
+
+TEST_CASE("regression: contacts_hang_for_balls_2e-16_apart, exit 2 naming the balls, not a hang or exit 3") {
+  Scratch scratch;
+  const std::string input = std::string(APOLLONIUS_TEST_DATA) + "/regression/contacts_hang_for_balls_2e-16_apart.balls";
+  const std::string out = scratch.path("out.txt");
+  for (const char* probe : {"0", "0.5", "1.4"}) {
+    CAPTURE(probe);
+    const Cli_result r = run({"contacts", input, "--probe", probe, "-o", out});
+    CHECK(r.code == EXIT_BAD_INPUT);
+    CHECK(r.err.find("contacts_hang_for_balls_2e-16_apart.balls:5:") != std::string::npos);
+    CHECK(r.err.find("balls 0 and 1 lie within 1e-10") != std::string::npos);
+    CHECK(scratch.file_count() == 0);
+  }
+}
