@@ -312,10 +312,9 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
     if (clearance <= clip_radius * (1 + kClearanceMargin)) return std::nullopt;
   std::vector<Inverse_exit> exits;
   for (const Radial_cut& cut : candidates.cuts) {
-    if (!(cut.numerator > 0)) return std::nullopt;
     if (cut.gap >= 2 * clip_radius) continue;  // never within the clip: its nearest point is at gap / 2
+    if (!(cut.numerator > 0) || too_close_to_measure(cut, clip_radius)) return std::nullopt;
     const double scale = 2 / cut.numerator;
-    if (too_close_to_measure(cut, clip_radius)) return std::nullopt;
     exits.push_back({scale * cut.weight_step,
                      {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
                      cut.weight_step,

@@ -265,3 +265,34 @@ TEST_CASE("random families: regions of one exit against the line cubature") {
   CHECK(count.line_misses <= 1 + count.cells / 1000);
   CHECK(count.cells > 100);
 }
+
+TEST_CASE("regression: contacts_line_cubature_for_far_ball_hidden_in_floating_point, every ball a candidate") {
+  const std::vector<Site> sites =
+      read_balls(std::string(APOLLONIUS_TEST_DATA) + "/regression/contacts_line_cubature_for_far_ball_hidden_in_floating_point.balls");
+  REQUIRE(sites.size() == 12);
+  std::vector<Cell_measure> cells;
+  std::vector<double> scale;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const double R = sites[i].w + 1.4;
+    scale.push_back(R * R);
+    Cell_measure m;
+    if (R > 0 && i < 3) {  // balls 3 to 11 are hidden or have no clipped cell
+      Cut_candidates candidates;
+      candidates.clearance.fill(INFINITY);
+      for (std::size_t j = 0; j < sites.size(); ++j)
+        if (j != i && j != 3) candidates.cuts.push_back(Radial_cut::between(sites[i], sites[j], static_cast<Site_index>(j)));
+      Axis_box box;
+      const double centre[3] = {sites[i].x, sites[i].y, sites[i].z};
+      for (int a = 0; a < 3; ++a) box.lo[a] = centre[a] - 2 * R, box.hi[a] = centre[a] + 2 * R;
+      Cell_cubature_options options;
+      options.clip_radius = R;
+      options.median_integrals = false;
+      options.relative_tolerance = 1e-6;
+      m = integrate_cell(sites[i], candidates, box, options).measure;
+      CHECK(m.reached_tolerance);
+      CHECK(m.directions < 20000);  // the regions' arcs, not the line cubature's rays
+    }
+    cells.push_back(m);
+  }
+  compare_sides(cells, scale);
+}
