@@ -25,6 +25,8 @@ constexpr double kCosineMargin = 1e-9;
 // say by how much): the halvings cannot multiply without bound where rounding defeats the rule.
 constexpr int kMaxDepth = 30;
 constexpr std::size_t kMaxPanels = 20000;
+// Two circles closer than this (in the terms of one's equation on the other) are taken as one.
+constexpr double kConcentric = 64 * std::numeric_limits<double>::epsilon();
 // The share of the tolerance that the arcs' quadrature aims at.
 constexpr double kArcShare = 1e-3;
 
@@ -208,8 +210,16 @@ class Clipped_cell {
         const double A = cap.rho * dot(other.m, cap.e1), B = cap.rho * dot(other.m, cap.e2);
         const double C = other.h - cap.h * dot(other.m, cap.m);
         const double r = std::sqrt(A * A + B * B);
-        if (r == 0) {  // concentric circles: the other holds everywhere on this one or nowhere
-          if (C > 0 || (C == 0 && other.m == cap.m && l < q)) arcs_.clear();
+        // Concentric circles, to rounding (A, B and C err by a few roundoffs): the other holds everywhere
+        // on this one or nowhere; on one and the same circle, the same cap keeps its arcs once (on the
+        // earlier), and the opposite cap leaves the region no interior (three exits tied along it).
+        if (r <= kConcentric) {
+          if (std::fabs(C) > kConcentric) {
+            if (C > 0) arcs_.clear();
+            continue;
+          }
+          if (dot(other.m, cap.m) < 0) return Region_sums{};
+          if (l < q) arcs_.clear();
           continue;
         }
         const double c = C / r;

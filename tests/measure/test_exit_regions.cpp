@@ -16,6 +16,7 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
 #include "measure/cell_cubature.h"
+#include "measure/contact_measures.h"
 #include "measure/orthonormal_frame.h"
 
 using namespace apollonius;
@@ -295,4 +296,20 @@ TEST_CASE("regression: contacts_line_cubature_for_far_ball_hidden_in_floating_po
     cells.push_back(m);
   }
   compare_sides(cells, scale);
+}
+
+TEST_CASE("regression: contacts_face_from_three_exits_tied_along_a_circle, the exact diagram's faces only") {
+  const std::vector<Site> sites =
+      read_balls(std::string(APOLLONIUS_TEST_DATA) + "/regression/contacts_face_from_three_exits_tied_along_a_circle.balls");
+  REQUIRE(sites.size() == 4);
+  const Contact_measures m = measure_contacts(sites, {1.4, 1e-8});
+  // The exact diagram's faces are 0-1, 0-2, 1-3 and 2-3 (0-3 and 1-2 would meet in one circle only).
+  REQUIRE(m.contacts.size() == 4);
+  const std::array<std::pair<Site_index, Site_index>, 4> faces{{{0, 1}, {0, 2}, {1, 3}, {2, 3}}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    CHECK(m.contacts[k].a == faces[k].first);
+    CHECK(m.contacts[k].b == faces[k].second);
+    CHECK(m.contacts[k].error < 1e-9);
+  }
+  CHECK(std::fabs(m.contacts[1].area - 0.97725) < 2e-5);  // the grid's value and its resolution
 }
