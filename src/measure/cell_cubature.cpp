@@ -764,6 +764,18 @@ class Cell_integrator {
 
 }  // namespace
 
+Axis_box box_beyond(const Site& site, double distance) {
+  const double centre[3] = {site.x, site.y, site.z};
+  Axis_box box;
+  for (int a = 0; a < 3; ++a) {
+    box.lo[a] = centre[a] - distance, box.hi[a] = centre[a] + distance;
+    // The differences below are exact or round towards the true one, so the loops end within a few steps.
+    while (centre[a] - box.lo[a] < distance) box.lo[a] = std::nextafter(box.lo[a], -kInfinity);
+    while (box.hi[a] - centre[a] < distance) box.hi[a] = std::nextafter(box.hi[a], kInfinity);
+  }
+  return box;
+}
+
 Cell_cubature_result integrate_cell(const Site& site, const Cut_candidates& candidates, const Axis_box& box,
                                     const Cell_cubature_options& options) {
   const double radius = options.clip_radius;

@@ -68,6 +68,10 @@ struct Cell_cubature_result {
   std::array<double, 6> largest_exit{};     // per face of the cubed sphere, the largest exit seen
 };
 
+// The box whose planes lie at least `distance` from the site's centre, exactly: centre -+ distance, rounded
+// outwards (far from the origin, x + d may round back to x).
+Axis_box box_beyond(const Site& site, double distance);
+
 // The measures of the cell of `site` bounded by the candidates' cuts and the box (which contains the site).
 // When clearance_exceeded, the measure is incomplete and must not be used.
 Cell_cubature_result integrate_cell(const Site& site, const Cut_candidates& candidates, const Axis_box& box,

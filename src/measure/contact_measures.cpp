@@ -116,9 +116,7 @@ Contact_measures measure_contacts(const std::vector<Site>& sites, const Contact_
       std::sort(candidates.cuts.begin(), candidates.cuts.end(),
                 [](const Radial_cut& x, const Radial_cut& y) { return x.site < y.site; });
       // A box twice the clip's size: its planes are never the nearest exit.
-      Axis_box box;
-      const double centre[3] = {s.x, s.y, s.z};
-      for (int a = 0; a < 3; ++a) box.lo[a] = centre[a] - 2 * radius, box.hi[a] = centre[a] + 2 * radius;
+      const Axis_box box = box_beyond(s, 2 * radius);
       Cell_cubature_options cubature;
       cubature.relative_tolerance = options.relative_tolerance;
       cubature.clip_radius = radius;

@@ -76,9 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     candidates.clearance.fill(INFINITY);
     for (std::size_t j = 0; j < sites.size(); ++j)
       if (j != i && !hidden[j]) candidates.cuts.push_back(Radial_cut::between(sites[i], sites[j], static_cast<Site_index>(j)));
-    Axis_box box;
-    const double centre[3] = {sites[i].x, sites[i].y, sites[i].z};
-    for (int a = 0; a < 3; ++a) box.lo[a] = centre[a] - 2 * R, box.hi[a] = centre[a] + 2 * R;
+    const Axis_box box = box_beyond(sites[i], 2 * R);
     Cell_cubature_options options;
     options.clip_radius = R;
     options.median_integrals = false;

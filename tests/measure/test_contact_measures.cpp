@@ -286,3 +286,22 @@ TEST_CASE("balls within 1e-10 of their radius of each other are refused, whateve
     check_estimate(m.contacts[0].area, m.contacts[0].error, kPi * (R * R - half * half));
   }
 }
+
+TEST_CASE("regression: contacts_empty_cells_at_7e16_from_a_box_rounded_to_zero; far from the origin as near it") {
+  // Two balls at z = 76561193665298448 (an ulp of 16 there) and the same pair at the origin.
+  const double far = 76561193665298448.0;
+  const std::vector<Site> there{{1, 1, far, 13.999999999999998}, {14.125000000000002, -4, far, 1}};
+  const std::vector<Site> here{{1, 1, 0, 13.999999999999998}, {14.125000000000002, -4, 0, 1}};
+  for (double probe : {0.0, 1.4}) {
+    CAPTURE(probe);
+    const Contact_measures a = measure_contacts(there, {probe, 1e-8}), b = measure_contacts(here, {probe, 1e-8});
+    REQUIRE(a.contacts.size() == 1);
+    REQUIRE(b.contacts.size() == 1);
+    CHECK(std::fabs(a.contacts[0].area - b.contacts[0].area) <= a.contacts[0].error + b.contacts[0].error);
+    for (std::size_t i = 0; i < 2; ++i) {
+      CHECK(a.volume[i] > 0);
+      CHECK(std::fabs(a.volume[i] - b.volume[i]) <= a.volume_error[i] + b.volume_error[i]);
+      CHECK(std::fabs(a.sas[i] - b.sas[i]) <= a.sas_error[i] + b.sas_error[i]);
+    }
+  }
+}

@@ -121,9 +121,7 @@ Cell_measure compare_cell(const std::vector<Site>& sites, std::size_t i, double 
     const Vector3 m{-cut.offset[0] / length, -cut.offset[1] / length, -cut.offset[2] / length};
     caps.push_back({m, (cut.numerator / R - 2 * cut.weight_step) / (2 * length)});
   }
-  Axis_box box;
-  const double centre[3] = {s.x, s.y, s.z};
-  for (int a = 0; a < 3; ++a) box.lo[a] = centre[a] - 2 * R, box.hi[a] = centre[a] + 2 * R;
+  const Axis_box box = box_beyond(s, 2 * R);
   Cell_cubature_options options;
   options.clip_radius = R;
   options.median_integrals = false;
@@ -282,9 +280,7 @@ TEST_CASE("regression: contacts_line_cubature_for_far_ball_hidden_in_floating_po
       candidates.clearance.fill(INFINITY);
       for (std::size_t j = 0; j < sites.size(); ++j)
         if (j != i && j != 3) candidates.cuts.push_back(Radial_cut::between(sites[i], sites[j], static_cast<Site_index>(j)));
-      Axis_box box;
-      const double centre[3] = {sites[i].x, sites[i].y, sites[i].z};
-      for (int a = 0; a < 3; ++a) box.lo[a] = centre[a] - 2 * R, box.hi[a] = centre[a] + 2 * R;
+      const Axis_box box = box_beyond(sites[i], 2 * R);
       Cell_cubature_options options;
       options.clip_radius = R;
       options.median_integrals = false;
