@@ -87,6 +87,7 @@ struct Region_sums {
   bool reached = true;
   bool touches_clip = false;  // some arc lies on the clip's circle: the sphere's region borders this one
   bool empty = true;          // no arc at all: the region has no area
+  double steepest = 0;        // the largest |b| of the exit and of those whose caps bound the region
 };
 
 // The region of one cut: its axis frame and the closed forms of exit_regions.h.
@@ -176,6 +177,7 @@ class Clipped_cell {
     if (!add_cap(e.b, 1 / radius_ - e.a)) return sums;
     caps_.front().clip = true;
     const Cap clip = caps_.front();
+    sums.steepest = std::sqrt(dot(e.b, e.b));
     for (std::size_t k = 0; k < exits_.size(); ++k) {
       if (k == j) continue;
       const Inverse_exit& o = exits_[k];
@@ -199,6 +201,7 @@ class Clipped_cell {
       if (cos_between >= -clip.h && cos_between * clip.h - sin_between * clip.rho > h + kCosineMargin) continue;
       if (h >= -clip.h && cos_between < clip.h * h - clip.rho * rho - kCosineMargin) return sums;
       add_cap(n, d);
+      sums.steepest = std::max(sums.steepest, std::sqrt(dot(o.b, o.b)));
     }
     Region shape(e);
     for (std::size_t q = 0; q < caps_.size(); ++q) {
@@ -342,9 +345,9 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
   for (std::size_t j = 0; j < exits.size(); ++j) {
     Region_sums sums = cell.region(j);
     // Rounding, amplified by the region's conditioning: u.N errs by about 1e-16 and L = a + b.u with it
-    // by |b| 1e-16 against L >= 1 / R, so each value by about |b| R of its magnitude's rounding.
-    const Vector3& b = exits[j].b;
-    const double condition = 1 + std::sqrt(dot(b, b)) * clip_radius;
+    // by |b| 1e-16 against L >= 1 / R, and so do the ties that bound the region, so each value by about
+    // |b| R of its magnitude's rounding, |b| the steepest of the exits involved.
+    const double condition = 1 + sums.steepest * clip_radius;
     for (int c = 0; c < 3; ++c) sums.magnitude[c] *= condition;
     m.directions += sums.nodes;
     sphere_bordered = sphere_bordered || sums.touches_clip;

@@ -23,8 +23,16 @@
 // The sphere's region is the rest: solid angle 4 pi minus the cuts', times R^2 its area, R^3 / 3 its volume.
 //
 // Quadrature. Each arc by Gauss-Kronrod 7/15 in its angle, halved while its estimate exceeds 1e-3 of the
-// tolerance (the integrands are analytic along an arc). Error estimate: the arcs' estimates, plus rounding
-// (the arcs' ends are computed, not exact: 64 unit roundoffs of the sum of the arcs' magnitudes).
+// tolerance (the integrands are analytic along an arc). Error estimate: the arcs' estimates; the
+// uncertainty of each arc's ends (acos near a tangency) times the integrand there; and rounding, 64 unit
+// roundoffs of the magnitudes summed (for the area, of the terms its closed form cancels), times the
+// region's conditioning 1 + |b| R.
+//
+// Cost and termination: with k cuts within the clip, per region O(k) cap tests (no trigonometry), then
+// for each of the k' caps that cross the clip's O(k') interval intersections, and the arcs' panels, at most
+// 20,000 halvings per cell (beyond, panels are accepted with reached_tolerance false): O(k k'^2) plus
+// O(20,000) per cell, every loop bounded. Degenerate inputs: circles equal to rounding are taken as one
+// (three exits tied along a circle leave a region no interior); a cut whose |b| R exceeds 1e10 is refused.
 #pragma once
 
 #include <optional>

@@ -309,3 +309,32 @@ TEST_CASE("regression: contacts_face_from_three_exits_tied_along_a_circle, the e
   }
   CHECK(std::fabs(m.contacts[1].area - 0.97725) < 2e-5);  // the grid's value and its resolution
 }
+
+TEST_CASE("regression: contacts_estimate_blind_to_a_steep_neighbouring_exit, both sides within the estimates") {
+  const std::vector<Site> sites =
+      read_balls(std::string(APOLLONIUS_TEST_DATA) + "/regression/contacts_estimate_blind_to_a_steep_neighbouring_exit.balls");
+  REQUIRE(sites.size() == 10);
+  const Contact_measures m = measure_contacts(sites, {1.4, 1e-6});
+  std::vector<bool> hidden(sites.size(), false);
+  for (const Hidden_site& h : m.hidden) hidden[h.site] = true;
+  std::vector<Cell_measure> cells;
+  std::vector<double> scale;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const double R = sites[i].w + 1.4;
+    scale.push_back(R * R);
+    Cell_measure cell;
+    if (!hidden[i]) {
+      Cut_candidates candidates;
+      candidates.clearance.fill(INFINITY);
+      for (std::size_t j = 0; j < sites.size(); ++j)
+        if (j != i && !hidden[j]) candidates.cuts.push_back(Radial_cut::between(sites[i], sites[j], static_cast<Site_index>(j)));
+      Cell_cubature_options options;
+      options.clip_radius = R;
+      options.median_integrals = false;
+      options.relative_tolerance = 1e-6;
+      cell = integrate_cell(sites[i], candidates, box_beyond(sites[i], 2 * R), options).measure;
+    }
+    cells.push_back(cell);
+  }
+  compare_sides(cells, scale);
+}
