@@ -49,6 +49,8 @@ struct Cap {
   double h, rho;
   Vector3 e1, e2;
   bool clip = false;  // the clip's circle: m is the region's axis N, so u.N = h there exactly
+  double uncertainty = 0;  // how far (radians) rounding may have moved the circle: n and d err by a few
+                           // roundoffs of the terms they are differences of, over |n|
 };
 
 // Disjoint arcs [psi0, psi1] within [0, 2 pi] of one circle, with the uncertainty of each end (rounding,
@@ -174,7 +176,8 @@ class Clipped_cell {
     const Inverse_exit& e = exits_[j];
     caps_.clear();
     // The clip first: L_j >= 1 / R. Empty when the cut never comes within R.
-    if (!add_cap(e.b, 1 / radius_ - e.a)) return sums;
+    const double own = std::sqrt(dot(e.b, e.b)) + std::fabs(e.a);
+    if (!add_cap(e.b, 1 / radius_ - e.a, own + 1 / radius_)) return sums;
     caps_.front().clip = true;
     const Cap clip = caps_.front();
     sums.steepest = std::sqrt(dot(e.b, e.b));
@@ -200,7 +203,7 @@ class Clipped_cell {
       const double rho = std::sqrt((1 - h) * (1 + h));
       if (cos_between >= -clip.h && cos_between * clip.h - sin_between * clip.rho > h + kCosineMargin) continue;
       if (h >= -clip.h && cos_between < clip.h * h - clip.rho * rho - kCosineMargin) return sums;
-      add_cap(n, d);
+      add_cap(n, d, own + std::sqrt(dot(o.b, o.b)) + std::fabs(o.a));
       sums.steepest = std::max(sums.steepest, std::sqrt(dot(o.b, o.b)));
     }
     Region shape(e);
@@ -254,7 +257,7 @@ class Clipped_cell {
 
  private:
   // Adds the cap n.u >= d; false if it is empty (then nothing is added).
-  bool add_cap(const Vector3& n, double d) {
+  bool add_cap(const Vector3& n, double d, double terms) {
     const double norm = std::sqrt(dot(n, n));
     const double h = d / norm;
     if (!(h < 1)) return false;
@@ -263,6 +266,7 @@ class Clipped_cell {
     cap.h = std::max(h, -1.0);
     cap.rho = std::sqrt((1 - cap.h) * (1 + cap.h));
     std::tie(cap.e1, cap.e2) = orthonormal_complement(cap.m);
+    cap.uncertainty = 8 * kUnitRoundoff * terms / norm;
     caps_.push_back(cap);
     return true;
   }
@@ -292,7 +296,9 @@ class Clipped_cell {
     if (!within) sums.reached = false;
     for (int c = 0; c < 3; ++c) {
       sums.value[c] += half * kronrod[c];
-      sums.error[c] += error[c];
+      // A circle moved by delta moves the arc's integral by about delta times its magnitude (the
+      // integrands vary on the scale of the sphere, 1 radian, or less).
+      sums.error[c] += error[c] + cap.uncertainty * half * magnitude[c];
       sums.magnitude[c] += half * magnitude[c];
     }
   }
@@ -346,8 +352,10 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
     Region_sums sums = cell.region(j);
     // Rounding, amplified by the region's conditioning: u.N errs by about 1e-16 and L = a + b.u with it
     // by |b| 1e-16 against L >= 1 / R, and so do the ties that bound the region, so each value by about
-    // |b| R of its magnitude's rounding, |b| the steepest of the exits involved.
-    const double condition = 1 + sums.steepest * clip_radius;
+    // |b| R of its magnitude's rounding, |b| the steepest of the exits involved. The factor 16 on top of
+    // the 64 roundoffs below is measured: three balls 3e-6 R apart (|b| R = 8e5) erred by 500 roundoffs
+    // times |b| R (fuzz_contacts).
+    const double condition = 1 + 16 * sums.steepest * clip_radius;
     for (int c = 0; c < 3; ++c) sums.magnitude[c] *= condition;
     m.directions += sums.nodes;
     sphere_bordered = sphere_bordered || sums.touches_clip;

@@ -310,10 +310,12 @@ TEST_CASE("regression: contacts_face_from_three_exits_tied_along_a_circle, the e
   CHECK(std::fabs(m.contacts[1].area - 0.97725) < 2e-5);  // the grid's value and its resolution
 }
 
-TEST_CASE("regression: contacts_estimate_blind_to_a_steep_neighbouring_exit, both sides within the estimates") {
-  const std::vector<Site> sites =
-      read_balls(std::string(APOLLONIUS_TEST_DATA) + "/regression/contacts_estimate_blind_to_a_steep_neighbouring_exit.balls");
-  REQUIRE(sites.size() == 10);
+TEST_CASE("regression: contacts_estimate_blind_to_a_steep_neighbouring_exit and contacts_estimate_short_for_three_balls_3e-6_apart, "
+          "both sides within the estimates") {
+  for (const char* name : {"contacts_estimate_blind_to_a_steep_neighbouring_exit.balls", "contacts_estimate_short_for_three_balls_3e-6_apart.balls"}) {
+  CAPTURE(name);
+  const std::vector<Site> sites = read_balls(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name);
+  REQUIRE(sites.size() >= 8);
   const Contact_measures m = measure_contacts(sites, {1.4, 1e-6});
   std::vector<bool> hidden(sites.size(), false);
   for (const Hidden_site& h : m.hidden) hidden[h.site] = true;
@@ -337,4 +339,5 @@ TEST_CASE("regression: contacts_estimate_blind_to_a_steep_neighbouring_exit, bot
     cells.push_back(cell);
   }
   compare_sides(cells, scale);
+  }
 }
