@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "measure/direction_range.h"
 #include "measure/exit_regions.h"
@@ -778,6 +780,13 @@ Axis_box box_beyond(const Site& site, double distance) {
 
 Cell_cubature_result integrate_cell(const Site& site, const Cut_candidates& candidates, const Axis_box& box,
                                     const Cell_cubature_options& options) {
+  if (!(options.clip_radius > 0)) throw std::invalid_argument("integrate_cell: the clip radius must be > 0");
+  // A pair hidden in floating point only (numerator 0) would put a cut at t = 0 with no direction: the
+  // lines' walks cannot take it, and no caller should pass one (contacts refuse such pairs first).
+  for (const Radial_cut& cut : candidates.cuts)
+    if (!(cut.numerator > 0) && !(cut.gap >= 2 * options.clip_radius))  // beyond a clip it never matters
+      throw std::domain_error("integrate_cell: site " + std::to_string(cut.site) +
+                              " is hidden by the cell's site in floating point only, not exactly");
   const double radius = options.clip_radius;
   if (std::isfinite(radius) && !options.median_integrals && options.exit_regions) {
     // The planes of the box must lie beyond the clip, where they are never the exit.

@@ -325,7 +325,7 @@ TEST_CASE("regression: contacts_estimate_blind_to_a_steep_neighbouring_exit and 
     const double R = sites[i].w + 1.4;
     scale.push_back(R * R);
     Cell_measure cell;
-    if (!hidden[i]) {
+    if (!hidden[i] && R > 0) {
       Cut_candidates candidates;
       candidates.clearance.fill(INFINITY);
       for (std::size_t j = 0; j < sites.size(); ++j)
