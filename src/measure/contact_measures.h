@@ -39,7 +39,7 @@ struct Contact_measures {
 // own (found in a grid of cell side 2 max(w + P): O(n) for atoms, O(n^2) if one ball dwarfs the rest). The
 // result is the same for every thread count. Throws std::invalid_argument for a probe that is negative or
 // not finite, or a tolerance outside (0, 0.5]; Unmeasurable_pair (exit_regions.h) for two balls within
-// about 1e-10 of their grown radius of each other, neither hiding the other.
+// about 1e-4 of their grown radius of each other, neither hiding the other.
 Contact_measures measure_contacts(const std::vector<Site>& sites, const Contact_options& options = {});
 
 }  // namespace apollonius

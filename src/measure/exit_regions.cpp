@@ -317,12 +317,12 @@ class Clipped_cell {
 Unmeasurable_pair::Unmeasurable_pair(Site_index site_a, Site_index site_b)
     : std::runtime_error("balls " + std::to_string(std::min(site_a, site_b)) + " and " +
                          std::to_string(std::max(site_a, site_b)) +
-                         " lie within 1e-10 of their probe-grown radius of each other, neither hiding the other: "
+                         " lie within 1e-4 of their probe-grown radius of each other, neither hiding the other: "
                          "their face passes through the ball's centre, beyond what double precision measures"),
       a(std::min(site_a, site_b)), b(std::max(site_a, site_b)) {}
 
 bool too_close_to_measure(const Radial_cut& cut, double clip_radius) {
-  return 2 * std::sqrt(dot(cut.offset, cut.offset)) * clip_radius > 1e10 * cut.numerator;
+  return 2 * std::sqrt(dot(cut.offset, cut.offset)) * clip_radius > 1e4 * cut.numerator;
 }
 
 std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candidates, double clip_radius,

@@ -32,7 +32,7 @@
 // for each of the k' caps that cross the clip's O(k') interval intersections, and the arcs' panels, at most
 // 20,000 halvings per cell (beyond, panels are accepted with reached_tolerance false): O(k k'^2) plus
 // O(20,000) per cell, every loop bounded. Degenerate inputs: circles equal to rounding are taken as one
-// (three exits tied along a circle leave a region no interior); a cut whose |b| R exceeds 1e10 is refused.
+// (three exits tied along a circle leave a region no interior); a cut whose |b| R exceeds 1e4 is refused.
 #pragma once
 
 #include <optional>
@@ -43,16 +43,17 @@
 
 namespace apollonius {
 
-// Two balls too close for the measures in doubles: within about 1e-10 R of each other (R = w + P), neither
+// Two balls too close for the measures in doubles: within about 1e-4 R of each other (R = w + P), neither
 // hiding the other. Their face then passes within rounding of the site, where the inverse exit's gradient
-// |b| = 2 |D| / c is beyond 1e10 / R.
+// |b| = 2 |D| / c is beyond 1e4 / R.
 struct Unmeasurable_pair : std::runtime_error {
   Unmeasurable_pair(Site_index a, Site_index b);
   Site_index a, b;  // a < b
 };
 
-// Whether `cut` is such a pair at this clip: |b| R = 2 |D| R / c > 1e10, where the rounding of u.N (about
-// 1e-16) would move L = a + b.u by more than 1e-6 of its value 1 / R on the clip.
+// Whether `cut` is such a pair at this clip: |b| R = 2 |D| R / c > 1e4. Rounding errs by about 2,000
+// roundoffs times |b| R (measured by fuzzing balls 3e-6 R apart), so at 1e4 by below 1e-8 of the value.
+// Real structures never come near: atoms closer than 1e-4 of their radius are one atom.
 bool too_close_to_measure(const Radial_cut& cut, double clip_radius);
 
 // The measures of the cell of a site bounded by its candidates' cuts and the sphere of radius clip_radius
