@@ -38,6 +38,7 @@ Vector3 cross(const Vector3& a, const Vector3& b) {
 struct Inverse_exit {
   double a;
   Vector3 b;
+  double slope;  // |b|
   double alpha, c;
   Site_index site;
 };
@@ -96,7 +97,7 @@ struct Region_sums {
 class Region {
  public:
   explicit Region(const Inverse_exit& e) : e_(e) {
-    beta_ = std::sqrt(dot(e.b, e.b));
+    beta_ = e.slope;
     axis_ = {e.b[0] / beta_, e.b[1] / beta_, e.b[2] / beta_};
     std::tie(across_x_, across_y_) = orthonormal_complement(axis_);
     top_ = e.a + beta_;
@@ -176,11 +177,11 @@ class Clipped_cell {
     const Inverse_exit& e = exits_[j];
     caps_.clear();
     // The clip first: L_j >= 1 / R. Empty when the cut never comes within R.
-    const double own = std::sqrt(dot(e.b, e.b)) + std::fabs(e.a);
+    const double own = e.slope + std::fabs(e.a);
     if (!add_cap(e.b, 1 / radius_ - e.a, own + 1 / radius_)) return sums;
     caps_.front().clip = true;
     const Cap clip = caps_.front();
-    sums.steepest = std::sqrt(dot(e.b, e.b));
+    sums.steepest = e.slope;
     for (std::size_t k = 0; k < exits_.size(); ++k) {
       if (k == j) continue;
       const Inverse_exit& o = exits_[k];
@@ -203,8 +204,8 @@ class Clipped_cell {
       const double rho = std::sqrt((1 - h) * (1 + h));
       if (cos_between >= -clip.h && cos_between * clip.h - sin_between * clip.rho > h + kCosineMargin) continue;
       if (h >= -clip.h && cos_between < clip.h * h - clip.rho * rho - kCosineMargin) return sums;
-      add_cap(n, d, own + std::sqrt(dot(o.b, o.b)) + std::fabs(o.a));
-      sums.steepest = std::max(sums.steepest, std::sqrt(dot(o.b, o.b)));
+      add_cap(n, d, own + o.slope + std::fabs(o.a));
+      sums.steepest = std::max(sums.steepest, o.slope);
     }
     Region shape(e);
     for (std::size_t q = 0; q < caps_.size(); ++q) {
@@ -336,6 +337,7 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
     const double scale = 2 / cut.numerator;
     exits.push_back({scale * cut.weight_step,
                      {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
+                     scale * std::sqrt(dot(cut.offset, cut.offset)),
                      cut.weight_step,
                      cut.numerator,
                      cut.site});
