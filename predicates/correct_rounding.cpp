@@ -15,7 +15,7 @@ constexpr mpfr_prec_t kPrecision = 256;
 class Mpfr {
  public:
   Mpfr() { mpfr_init2(value_, kPrecision); }
-  explicit Mpfr(const Exact& x) : Mpfr() { mpfr_set_z_2exp(value_, x.man(), x.exp(), MPFR_RNDN); }
+  explicit Mpfr(const Exact& x) : Mpfr() { mpfr_set_q(value_, static_cast<Rational>(x).mpq(), MPFR_RNDN); }
   ~Mpfr() { mpfr_clear(value_); }
   Mpfr(const Mpfr&) = delete;
   Mpfr& operator=(const Mpfr&) = delete;

@@ -1,30 +1,26 @@
 #include "predicates/number_types.h"
 
-#include <cmath>
-#include <limits>
+#include <cfenv>
+#include <utility>
 
 namespace apollonius {
 
+Exact exact_integer(const CGAL::Gmpz& z) {
+  if (z == 0) return Exact(0);
+  const Exact magnitude(CGAL::abs(z));
+  return z < 0 ? -magnitude : magnitude;
+}
+
+// CGAL::Mpzf::to_interval keeps the mantissa's top 53 bits exactly and the next integer up, then scales
+// both by std::ldexp(1, e) in interval arithmetic. That scale must be rounded to nearest: under a
+// Rounding_guard's upward rounding a scale below the subnormal range becomes denorm_min instead of 0, and
+// the lower bound then exceeds the value (test_vertices_of, "beyond the double range").
 Interval enclosing_interval(const Exact& x) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  constexpr double largest = std::numeric_limits<double>::max();
-  constexpr double smallest = std::numeric_limits<double>::denorm_min();
-  if (x.sign() == CGAL::ZERO) return Interval(0);
-  // |mantissa| = m * 2^e with m in [0.5, 1) truncated towards zero, so |x| in [m, m + 2^-53] * 2^e.
-  long e = 0;
-  const double m = std::fabs(mpz_get_d_2exp(&e, x.man()));
-  const long exponent = e + x.exp();
-  double low, high;
-  if (exponent > std::numeric_limits<double>::max_exponent) {
-    low = largest, high = inf;
-  } else if (exponent < std::numeric_limits<double>::min_exponent - std::numeric_limits<double>::digits) {
-    low = 0, high = smallest;
-  } else {
-    // ldexp is exact unless it overflows or underflows; one ulp outwards covers both cases.
-    low = std::nextafter(std::ldexp(m, static_cast<int>(exponent)), 0.0);
-    high = std::nextafter(std::ldexp(m + std::ldexp(1.0, -53), static_cast<int>(exponent)), inf);
-  }
-  return x.sign() == CGAL::POSITIVE ? Interval(low, high) : Interval(-high, -low);
+  const int mode = std::fegetround();
+  std::fesetround(FE_TONEAREST);
+  const std::pair<double, double> bounds = x.to_interval();
+  std::fesetround(mode);
+  return Interval(bounds);
 }
 
 }  // namespace apollonius

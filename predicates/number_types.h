@@ -1,13 +1,15 @@
 // The two number types of the staged evaluation, and the sign function each stage uses (plus plain doubles,
 // for the floating path).
 //  - Interval: CGAL::Interval_nt<false>, valid only inside a Rounding_guard. Its sign is certain or throws.
-//  - Exact: CGAL::Gmpzf, a GMP mantissa times 2^exponent. Every double is one exactly, and +, -, * are
-//    exact, so the vertex predicates are written division-free.
+//  - Exact: CGAL::Mpzf, an integer of 64-bit limbs times 2^(64 exponent), with a few limbs stored inline
+//    (no allocation for most predicate terms). Every double is one exactly, and +, -, * are exact, so the
+//    vertex predicates are written division-free.
 //  - Rational: CGAL::Gmpq, for the exact stage of the few predicates that divide (rational.h).
 #pragma once
 
 #include <CGAL/Gmpq.h>
-#include <CGAL/Gmpzf.h>
+#include <CGAL/Gmpz.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Interval_nt.h>
 
 #include "predicates/sign.h"
@@ -15,7 +17,7 @@
 namespace apollonius {
 
 using Interval = CGAL::Interval_nt<false>;
-using Exact = CGAL::Gmpzf;
+using Exact = CGAL::Mpzf;
 using Rational = CGAL::Gmpq;
 
 inline Sign certain_sign(const Interval& x) {
@@ -31,9 +33,13 @@ inline Sign certain_sign(const Rational& x) { return static_cast<Sign>(CGAL::sig
 // The floating path (`--arith float`, no filter and no exact stage): the computed sign, taken as it is.
 inline Sign certain_sign(double x) { return x > 0 ? Sign::POSITIVE : x < 0 ? Sign::NEGATIVE : Sign::ZERO; }
 
+// The integer z as an Exact. CGAL 5.5's Mpzf(const Gmpz&) drops the sign (it sizes the number by
+// mpz_size, the magnitude's) and mishandles 0 (mpz_scan1 finds no bit): use this instead.
+Exact exact_integer(const CGAL::Gmpz& z);
+
 // An interval that contains x, valid in any rounding mode and beyond the double range (then one bound is
-// infinite or zero). CGAL's own to_interval(Gmpzf) is not used: it maps values above the double range to
-// [inf, inf] and truncates exponents to int, so its lower bound can exceed the value.
+// infinite or zero; tests/data/regression/gmpzf_to_interval_beyond_double_range).
 Interval enclosing_interval(const Exact& x);
+
 
 }  // namespace apollonius

@@ -2,7 +2,7 @@
 // (sign_of_root_number, sign_of_two_root_sum, compare) with NT = Exact and NT = Interval, and for
 // to_nearest_double of predicates/correct_rounding.h.
 //
-// Every input is an integer times a power of two (what Gmpzf holds), so the oracle of mpfr_oracle.h is
+// Every input is an integer times a power of two (what the exact type holds), so the oracle of mpfr_oracle.h is
 // rigorous: a root-number value is, up to a power of two, an algebraic integer, whose norm separates it
 // from zero; MPFR at >= 1000 bits (more when the separation bound needs it) then certifies its sign.
 // The Interval stage may throw Uncertain_sign but must never return a wrong sign (ZERO included).
@@ -471,7 +471,7 @@ TEST_CASE("sign_of_root_number: exact zeros") {
       case 1: d = rng.natural(200); break;  // a = b = 0
       case 2: b = rng.integer(200); break;  // a = 0, d = 0
       case 3: break;                        // all zero
-      default: {                            // s a power of two: Gmpzf strips it into the exponent
+      default: {                            // s a power of two: the exact type may strip it into the exponent
         const Z s = oracle::shl(Z(1), static_cast<unsigned long>(rng.uniform(0, 150)));
         b = rng.nonzero(100);
         d = s * s;

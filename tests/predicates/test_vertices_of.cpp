@@ -135,6 +135,16 @@ TEST_CASE("is_hidden: containment, internal tangency, duplicates") {
   CHECK_FALSE(is_hidden(Site{2.0000000000000004, 0, 0, 1}, 1, big, 0));
 }
 
+TEST_CASE("exact_integer keeps the sign and zero (CGAL 5.5's Mpzf(Gmpz) drops both)") {
+  const CGAL::Gmpz big = CGAL::Gmpz(1) << 200;
+  CHECK(exact_integer(CGAL::Gmpz(0)).is_zero());
+  CHECK(exact_integer(CGAL::Gmpz(-6)) == Exact(-6));
+  CHECK(exact_integer(CGAL::Gmpz(7)) == Exact(7));
+  CHECK(exact_integer(-big) + exact_integer(big) == Exact(0));
+  CHECK(exact_integer(-big - 1) < Exact(-std::ldexp(1.0, 200)));
+  CHECK(exact_integer(-big - 1) + Exact(std::ldexp(1.0, 200)) == Exact(-1));
+}
+
 TEST_CASE("enclosing_interval contains exact values beyond the double range") {
   Rounding_guard guard;
   const Exact huge = Exact(std::ldexp(1.5, 1000)) * Exact(std::ldexp(1.0, 1000));
@@ -147,9 +157,20 @@ TEST_CASE("enclosing_interval contains exact values beyond the double range") {
   CHECK(std::isinf(n.inf()));
   CHECK(n.sup() == -std::numeric_limits<double>::max());
   CHECK_THROWS_AS(certain_sign(t - Interval(0)), Uncertain_sign);
-  const Interval third = enclosing_interval(Exact(1) * Exact(0.1));
-  CHECK(third.inf() < 0.1);
-  CHECK(third.sup() > 0.1);
+  const Interval tenth = enclosing_interval(Exact(1) * Exact(0.1));
+  CHECK(tenth.inf() <= 0.1);
+  CHECK(tenth.sup() >= 0.1);
+  CHECK(tenth.sup() <= std::nextafter(0.1, 1.0));
+  // 0.1^2 is not a double: strictly inside, within an ulp or two.
+  const Exact square = Exact(0.1) * Exact(0.1);
+  const Interval hundredth = enclosing_interval(square);
+  CHECK(Exact(hundredth.inf()) < square);
+  CHECK(square < Exact(hundredth.sup()));
+  CHECK(hundredth.sup() <= std::nextafter(std::nextafter(hundredth.inf(), 1.0), 1.0));
+  // Below the subnormal range in either sign, in the guard's upward rounding.
+  const Interval negative_tiny = enclosing_interval(-tiny);
+  CHECK(negative_tiny.sup() == 0);
+  CHECK(negative_tiny.inf() < 0);
 }
 
 // The a priori bound of the first stage (double_with_magnitude.h) against the exact line, on every value

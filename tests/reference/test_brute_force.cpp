@@ -73,7 +73,7 @@ using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
 Root_number<Exact> as_root_number(const Kernel::FT& value) {
   const auto q = CGAL::exact(value);  // a GMP rational
-  return {Exact(q.get_num().get_mpz_t()), Exact(0), Exact(0), Exact(q.get_den().get_mpz_t())};
+  return {exact_integer(CGAL::Gmpz(q.get_num().get_mpz_t())), Exact(0), Exact(0), exact_integer(CGAL::Gmpz(q.get_den().get_mpz_t()))};
 }
 
 }  // namespace

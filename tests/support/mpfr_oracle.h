@@ -1,11 +1,11 @@
 // A brute-force oracle for the exact sign helpers of predicates/root_sign.h and for
-// predicates/correct_rounding.h: dyadic inputs (integer * 2^e, exactly what Gmpzf holds), signs of
+// predicates/correct_rounding.h: dyadic inputs (integer * 2^e, exactly what the exact type holds), signs of
 // a + b1 sqrt(d1) + b2 sqrt(d2) certified with MPFR (at least 1000 bits), and round-to-nearest of
 // (a + b sqrt d) / den certified with MPFR enclosures. It shares no code with the helpers under test.
 #pragma once
 
 #include <CGAL/Gmpz.h>
-#include <CGAL/Gmpzf.h>
+#include <CGAL/Mpzf.h>
 #include <mpfr.h>
 
 #include <algorithm>
@@ -19,6 +19,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "predicates/number_types.h"
 
 namespace oracle {
 
@@ -93,15 +95,15 @@ inline Dy dy_of_double(double g) {
   return Dy{Z(static_cast<long>(std::ldexp(mantissa, 53))), exponent - 53};
 }
 
-// Exactly 2^k as a Gmpzf.
-inline CGAL::Gmpzf power_of_two(long k) {
-  if (k >= 0) return CGAL::Gmpzf(shl(Z(1), static_cast<unsigned long>(k)));
-  CGAL::Gmpzf r(1);
-  for (; k < -1000; k += 1000) r = r * CGAL::Gmpzf(std::ldexp(1.0, -1000));
-  return r * CGAL::Gmpzf(std::ldexp(1.0, static_cast<int>(k)));
+// Exactly 2^k as an Mpzf.
+inline CGAL::Mpzf power_of_two(long k) {
+  if (k >= 0) return apollonius::exact_integer(shl(Z(1), static_cast<unsigned long>(k)));
+  CGAL::Mpzf r(1);
+  for (; k < -1000; k += 1000) r = r * CGAL::Mpzf(std::ldexp(1.0, -1000));
+  return r * CGAL::Mpzf(std::ldexp(1.0, static_cast<int>(k)));
 }
 
-inline CGAL::Gmpzf to_exact(const Dy& x) { return CGAL::Gmpzf(x.m) * power_of_two(x.e); }
+inline CGAL::Mpzf to_exact(const Dy& x) { return apollonius::exact_integer(x.m) * power_of_two(x.e); }
 
 // RAII MPFR number.
 class Mp {
