@@ -10,6 +10,9 @@ namespace {
 
 // About this many level-0 cubes per active site: fewer cubes start with more candidates each.
 constexpr double kCubesPerSite = 1;
+// The root box grows for the weights' range up to this many times its least radius (16 times 4 half-extents:
+// the radius of far_field_scale 32, which every input got before 2026-11-28).
+constexpr double kWeightScaleLimit = 16;
 // Lattice indices stay below 2^50 in magnitude, so that k 2^l s is exact and sums of indices do not
 // overflow; the cube side stays above 2^-40 times the extent of the sites.
 constexpr double kLargestIndex = 0x1p50;
@@ -69,7 +72,21 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
   }
   double half_extent = 0;
   for (int a = 0; a < 3; ++a) half_extent = std::max(half_extent, grid_box.hi[a] - origin_[a]);
-  const double needed = 2 * far_field_scale * half_extent;
+  // far_field.h decides beyond R by the lifted triangulation when t + w_j >= 0 there, which holds once R
+  // exceeds |p_i - O| + w_i - w_min for every site (far_field.cpp checks it exactly; this rounded estimate
+  // with a factor 2 only sizes R): R grows for the weights' range up to kWeightScaleLimit times the least
+  // radius, beyond which the far field's patches decide.
+  double weight_range = 0;
+  if (!active.empty()) {
+    double w_lo = kInfinity, w_hi = -kInfinity;
+    for (Site_index i : active) w_lo = std::min(w_lo, sites[i].w), w_hi = std::max(w_hi, sites[i].w);
+    weight_range = w_hi - w_lo;
+  }
+  const double minimum = 2 * far_field_scale * half_extent;
+  const double for_weights = 2 * (std::sqrt(3.0) * half_extent + weight_range);
+  const double needed = std::isfinite(for_weights) && for_weights <= kWeightScaleLimit * minimum
+                            ? std::max(minimum, for_weights)
+                            : minimum;
 
   // Shells: level l + 1 has cubes twice as large, reaches at least one of them beyond level l, and is
   // aligned to the cubes of level l + 2.

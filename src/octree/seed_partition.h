@@ -22,7 +22,8 @@ namespace apollonius {
 // four cubes of level l - 1.
 class Seed_partition {
  public:
-  // R contains the ball of radius 2 * far_field_scale * (largest half-extent of G) about G's centre.
+  // R contains the ball about G's centre of radius 2 * far_field_scale * h (h: G's largest half-extent),
+  // and of radius 2 (sqrt(3) h + w_max - w_min) when that is at most 16 times larger (seed_partition.cpp).
   // Throws std::overflow_error when R exceeds the double range.
   Seed_partition(const std::vector<Site>& sites, const std::vector<Site_index>& active, double far_field_scale);
 
