@@ -24,7 +24,7 @@ Sign reference_compare(const std::array<double, 3>& p, const Site& s, const Site
     return sqrt(dx * dx + dy * dy + dz * dz) - Big(x.w);
   };
   const Big d = distance(s) - distance(t);
-  if (abs(d) < Big(1e-500)) return Sign::ZERO;
+  if (abs(d) < Big("1e-500")) return Sign::ZERO;
   return d > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
 }
 
@@ -33,7 +33,7 @@ Sign reference_side(const std::array<double, 3>& p, const Site& s, double r) {
   if (radius < 0) return Sign::POSITIVE;
   const Big dx = Big(p[0]) - Big(s.x), dy = Big(p[1]) - Big(s.y), dz = Big(p[2]) - Big(s.z);
   const Big d = sqrt(dx * dx + dy * dy + dz * dz) - radius;
-  if (abs(d) < Big(1e-500)) return Sign::ZERO;
+  if (abs(d) < Big("1e-500")) return Sign::ZERO;
   return d > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
 }
 
