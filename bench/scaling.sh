@@ -3,11 +3,11 @@
 # steadier than wall time on a shared machine) and peak memory at each
 # size, and per site as a ratio to the uniform family at the same size (the goal: at most 2).
 # Usage: bench/scaling.sh [BINARY (default build/apollonius3d)] [SIZES (default "1000 4000 10000")]
-#        [FAMILIES (default "lattice lattice-noise far-vertices sphere-tangent circle")] [TIMEOUT s (default 120)]
+#        [FAMILIES (default "lattice lattice-noise far-vertices sphere-tangent two-spheres circle-tangent circle")] [TIMEOUT s (default 120)]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 binary=${1:-build/apollonius3d} sizes=${2:-1000 4000 10000}
-families=${3:-lattice lattice-noise far-vertices sphere-tangent circle} limit=${4:-120}
+families=${3:-lattice lattice-noise far-vertices sphere-tangent two-spheres circle-tangent circle} limit=${4:-120}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 run() {  # family n -> "seconds peak_MiB" or "timeout -"
