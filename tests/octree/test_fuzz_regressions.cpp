@@ -177,10 +177,22 @@ TEST_CASE("regression: octree_tie_of_13_sites_never_settled") {
 
 // fuzz_vertices with the 2 s limit, second 30-minute run of 2026-11-28 (after the depth fix): sites from
 // 5e-324 to 2e289, a cluster of ten small ones with others at 1e120, 4e159 and 2e289. Exact, but 84,224
-// boxes (0.4 s release, over 2 s with sanitizers): open, as a box count to bring down (issue 21). The
-// bound makes a regression past today's count a failure.
+// boxes (0.4 s release, over 2 s with sanitizers), most of them between G and a root box 32 times larger.
+// With the root box at twice G (octree_diagram.cpp, kFarFieldScale): 6,192.
 TEST_CASE("regression: octree_boxes_84k_for_sites_from_5e-324_to_2e289") {
   const Octree_statistics statistics =
       check_octree_equals_brute_force("octree_boxes_84k_for_sites_from_5e-324_to_2e289.balls");
-  CHECK(statistics.boxes < 100000);
+  CHECK(statistics.boxes < 20000);
+}
+
+// fuzz_vertices with the 2 s limit, 2026-11-28 (third stop): 11 sites from 5e-324 to 9e303, whose far field
+// fails the lifted triangulation's condition, so its patches record quadruples: C(k, 4) copies at every
+// patch of the depth limit, sorted at the end (0.69 s release, 79 MB; over 2 s with the sanitizers). Now
+// recorded once per run of equal patches and compacted whenever the list doubles (0.21 s, 12 MB).
+TEST_CASE("regression: octree_far_field_sorts_copies_for_11_sites_from_5e-324_to_9e303") {
+  const char* name = "octree_far_field_sorts_copies_for_11_sites_from_5e-324_to_9e303.balls";
+  Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);
+  const Octree_statistics statistics = check_octree_equals_brute_force(name);
+  CHECK(statistics.far_field_quadruples == 210);  // C(10, 4): every quadruple of the 10 escaping sites
+  MESSAGE(name << ": " << statistics.far_field_quadruples << " far-field quadruples, " << limit.stop() << " s");
 }
