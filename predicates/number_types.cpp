@@ -1,7 +1,6 @@
 #include "predicates/number_types.h"
 
-#include <cfenv>
-#include <utility>
+#include <CGAL/FPU.h>
 
 namespace apollonius {
 
@@ -14,13 +13,14 @@ Exact exact_integer(const CGAL::Gmpz& z) {
 // CGAL::Mpzf::to_interval keeps the mantissa's top 53 bits exactly and the next integer up, then scales
 // both by std::ldexp(1, e) in interval arithmetic. That scale must be rounded to nearest: under a
 // Rounding_guard's upward rounding a scale below the subnormal range becomes denorm_min instead of 0, and
-// the lower bound then exceeds the value (test_vertices_of, "beyond the double range").
+// the lower bound then exceeds the value (test_vertices_of, "beyond the double range"). The mode is switched
+// and restored through CGAL's own FPU control, the one Rounding_guard uses: std::fegetround reads the x87
+// control word, which CGAL's SSE2 rounding does not set, so restoring what it returned left the caller's
+// intervals rounded to nearest (the brute force then reported a vertex at 9.7e90 that a site is closer to;
+// test_vertices_of, "keeps the caller's rounding").
 Interval enclosing_interval(const Exact& x) {
-  const int mode = std::fegetround();
-  std::fesetround(FE_TONEAREST);
-  const std::pair<double, double> bounds = x.to_interval();
-  std::fesetround(mode);
-  return Interval(bounds);
+  const CGAL::Protect_FPU_rounding<true> to_nearest(CGAL_FE_TONEAREST);
+  return Interval(x.to_interval());
 }
 
 }  // namespace apollonius

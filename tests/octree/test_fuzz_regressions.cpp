@@ -189,6 +189,13 @@ TEST_CASE("regression: octree_boxes_84k_for_sites_from_5e-324_to_2e289") {
 // fails the lifted triangulation's condition, so its patches record quadruples: C(k, 4) copies at every
 // patch of the depth limit, sorted at the end (0.69 s release, 79 MB; over 2 s with the sanitizers). Now
 // recorded once per run of equal patches and compacted whenever the list doubles (0.21 s, 12 MB).
+// fuzz_vertices, 2026-11-28 (fourth stop): the octree and the brute force disagreed on a root near 9.7e90.
+// The brute force was wrong: enclosing_interval had lost the caller's upward rounding (number_types.cpp),
+// so an exact-built vertex's box excluded the vertex (test_vertices_of has the predicate-level tests).
+TEST_CASE("regression: brute_force_vertex_at_9e90_from_lost_rounding") {
+  check_octree_equals_brute_force("brute_force_vertex_at_9e90_from_lost_rounding.balls");
+}
+
 TEST_CASE("regression: octree_far_field_sorts_copies_for_11_sites_from_5e-324_to_9e303") {
   const char* name = "octree_far_field_sorts_copies_for_11_sites_from_5e-324_to_9e303.balls";
   Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);

@@ -145,6 +145,42 @@ TEST_CASE("exact_integer keeps the sign and zero (CGAL 5.5's Mpzf(Gmpz) drops bo
   CHECK(exact_integer(-big - 1) + Exact(std::ldexp(1.0, 200)) == Exact(-1));
 }
 
+TEST_CASE("enclosing_interval keeps the caller's rounding") {
+  // Under a Rounding_guard, Interval's operations round outwards only while the mode stays upward: 1/3
+  // then has distinct bounds, and a product of exact doubles that is not a double is strictly inside.
+  Rounding_guard guard;
+  const Interval before = Interval(1) / Interval(3);
+  REQUIRE(before.inf() < before.sup());
+  for (const Exact& x : {Exact(0.1) * Exact(0.1), Exact(std::ldexp(1.5, -1000)) * Exact(std::ldexp(1.0, -1000)),
+                         Exact(std::ldexp(1.5, 1000)) * Exact(std::ldexp(1.0, 1000)), Exact(-3)}) {
+    (void)enclosing_interval(x);
+    const Interval third = Interval(1) / Interval(3);
+    CHECK(third.inf() < third.sup());
+    const Interval product = Interval(1.0000000000000002) * Interval(3.0131568673200204e+137);
+    CHECK(product.inf() < product.sup());
+  }
+}
+
+// The input where the lost rounding showed (fuzz_vertices, 2026-11-28): the brute force, which does not
+// normalize the scale, reported the root of sites 0 1 3 4 at about (-7.25, -0.5, -9.7e90), to which site 2
+// is closer by 6.2e-91 (a 400-digit evaluation). Its box, built from the exact coordinates, excluded the
+// true y after the rounding was lost, and the interval stage of vertex_conflict then certified POSITIVE.
+TEST_CASE("vertex_conflict at a root near 1e91 under every scaling") {
+  const double raw[5][4] = {{-4, 3, -4, -4}, {-3.75, -3.75, -4, -4}, {-4, 0, -4, -4},
+                            {-4, -8.8310950986181268e+45, -4.0000000000000009, 1.893406184664404e-55}, {-4, -4, -3, -3}};
+  for (int k : {0, -50, -100, -200, -600, 50, 100, 200}) {
+    CAPTURE(k);
+    std::vector<Site> sites;
+    for (const auto& r : raw) sites.push_back({std::ldexp(r[0], k), std::ldexp(r[1], k), std::ldexp(r[2], k), std::ldexp(r[3], k)});
+    const Quadruple_vertices roots = vertices_of(make_quadruple({0, 1, 3, 4}, sites));
+    REQUIRE(roots.vertices.size() == 1);
+    CHECK(vertex_conflict(roots.vertices[0], sites[2]) == Sign::NEGATIVE);
+    const Vertex exact_built = Vertices_of_predicate::evaluate<Exact>(make_quadruple({0, 1, 3, 4}, sites)).vertices[0];
+    const std::array<Interval, 4> box = exact_built.point_interval();
+    CHECK((box[1].inf() <= std::ldexp(-0.5, k) && std::ldexp(-0.5, k) <= box[1].sup()));
+  }
+}
+
 TEST_CASE("enclosing_interval contains exact values beyond the double range") {
   Rounding_guard guard;
   const Exact huge = Exact(std::ldexp(1.5, 1000)) * Exact(std::ldexp(1.0, 1000));
