@@ -41,5 +41,4 @@ Exact exact_integer(const CGAL::Gmpz& z);
 // infinite or zero; tests/data/regression/gmpzf_to_interval_beyond_double_range).
 Interval enclosing_interval(const Exact& x);
 
-
 }  // namespace apollonius

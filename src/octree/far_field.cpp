@@ -202,8 +202,8 @@ class Far_field {
   // `dimension` and `basis`: heaviest_lift_basis of kept, 3 or more (refine() stops below).
   void record_quadruples(const std::vector<Site_index>& kept, int dimension, const std::array<Site_index, 4>& basis) {
     // Neighbouring patches at the depth limit mostly keep the same sites: recorded once in a row, and the
-    // list compacted whenever it doubles (sites spread over 600 binades: 11 sites, 0.6 s in sorting C(k, 4)
-    // copies, fuzz_vertices; now O(distinct) memory and one sort per doubling).
+    // list compacted whenever it doubles, so it holds at most twice the distinct quadruples and costs one
+    // sort per doubling (tests/data/regression/octree_far_field_sorts_copies_for_11_sites_*).
     if (kept == last_recorded_) return;
     last_recorded_ = kept;
     record_distinct(kept, dimension, basis);

@@ -26,7 +26,7 @@ namespace {
 // The root box reaches at least this many times G's size in every direction (more for weights far
 // larger than the sites' spread: seed_partition.h); beyond it, far_field.h decides. Near a flat face of
 // sites (a lattice), the cells beyond it are parallel prisms that only the far field separates: the boxes
-// between G and R cost about R / G per face (scale 32: lattice 4000 1.6 s, scale 2: 0.9 s; same output).
+// between G and R cost about R / G per face (docs/benchmarks.md, "the root box at twice G").
 constexpr double kFarFieldScale = 2;
 
 // Seconds since the last call (or construction).
