@@ -48,9 +48,11 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
                                double far_field_scale) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   std::array<double, 3> lo{kInfinity, kInfinity, kInfinity}, hi{-kInfinity, -kInfinity, -kInfinity};
+  double w_lo = kInfinity, w_hi = -kInfinity;
   for (Site_index i : active) {
     const double c[3] = {sites[i].x, sites[i].y, sites[i].z};
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
+    w_lo = std::min(w_lo, sites[i].w), w_hi = std::max(w_hi, sites[i].w);
   }
   const double side = cube_side(lo, hi, active.size());
 
@@ -76,14 +78,8 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
   // exceeds |p_i - O| + w_i - w_min for every site (far_field.cpp checks it exactly; this rounded estimate
   // with a factor 2 only sizes R): R grows for the weights' range up to kWeightScaleLimit times the least
   // radius, beyond which the far field's patches decide.
-  double weight_range = 0;
-  if (!active.empty()) {
-    double w_lo = kInfinity, w_hi = -kInfinity;
-    for (Site_index i : active) w_lo = std::min(w_lo, sites[i].w), w_hi = std::max(w_hi, sites[i].w);
-    weight_range = w_hi - w_lo;
-  }
   const double minimum = 2 * far_field_scale * half_extent;
-  const double for_weights = 2 * (std::sqrt(3.0) * half_extent + weight_range);
+  const double for_weights = 2 * (std::sqrt(3.0) * half_extent + (w_hi - w_lo));
   const double needed = std::isfinite(for_weights) && for_weights <= kWeightScaleLimit * minimum
                             ? std::max(minimum, for_weights)
                             : minimum;
