@@ -19,11 +19,13 @@ namespace {
 // Patches are refined at most this often (6 * 8^10 patches at the most, only where sites nearly tie at
 // infinity). A patch whose kept sites stop changing for kStagnationLevels levels, with at most
 // kStagnantSites of them, stops earlier: sites that tie at infinity (or beyond what the root box lets the
-// bound see) are not separated by finer patches, and their quadruples are decided anyway.
+// bound see) are not separated by finer patches, and their quadruples are decided anyway. Twelve, as the
+// octree's stagnant boxes: C(12, 4) = 495 quadruples, recorded once per run of patches that keep the same
+// sites, cost less than the patches down to the depth limit (4^7 per stagnant patch at depth 3).
 constexpr int kMaxPatchDepth = 10;
 constexpr int kDistanceDepth = 3;
 constexpr int kStagnationLevels = 2;
-constexpr std::size_t kStagnantSites = 8;
+constexpr std::size_t kStagnantSites = 12;
 // Witnesses tried per patch (refine()).
 constexpr int kWitnesses = 3;
 
@@ -92,21 +94,25 @@ class Far_field {
       }
     }
     if (kept.size() <= 3) {
-      if (kept.size() >= 2) patch_sites_.push_back(kept);
+      if (kept.size() >= 2) record_sites(kept);
       return;
     }
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle) have
     // no vertex among themselves (lift_outside_span.h), wherever they are: nothing to refine.
-    std::array<Site_index, 4> basis;
-    const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
+    if (kept != span_of_) {  // neighbouring and nested patches mostly keep the same sites
+      span_of_ = kept;
+      span_dimension_ = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), span_basis_);
+    }
+    const int dimension = span_dimension_;
+    const std::array<Site_index, 4> basis = span_basis_;
     if (dimension <= 2) {
-      patch_sites_.push_back(kept);
+      record_sites(kept);
       return;
     }
     const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
-      patch_sites_.push_back(kept);
+      record_sites(kept);
       if (record_) record_quadruples(kept, dimension, basis);
       return;
     }
@@ -119,6 +125,10 @@ class Far_field {
   }
 
   std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
+  // Each run of patches keeping the same sites adds them once (duplicates are removed by far_vertices).
+  void record_sites(const std::vector<Site_index>& kept) {
+    if (patch_sites_.empty() || patch_sites_.back() != kept) patch_sites_.push_back(kept);
+  }
   std::vector<std::vector<Site_index>> take_patch_sites() { return std::move(patch_sites_); }
 
  private:
@@ -243,6 +253,9 @@ class Far_field {
   static constexpr std::size_t kCompactionFloor = 1 << 16;
   std::vector<Site_index> last_recorded_;  // the last set record_quadruples recorded
   std::size_t compacted_size_ = 0;         // the list's size after its last compaction (all distinct then)
+  std::vector<Site_index> span_of_;  // the last set whose lifts' span refine() found, and that span
+  int span_dimension_ = 0;
+  std::array<Site_index, 4> span_basis_{};
   std::vector<Site_index> last_kept_;  // the last set record_distinct tested, and the outcome
   bool last_on_one_line_ = false;
   std::array<double, 3> origin_;
