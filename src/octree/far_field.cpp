@@ -75,7 +75,8 @@ class Far_field {
   }
 
   // Termination: each call either stops or recurses into 8 children one level deeper, and stops at
-  // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests and O(k log k) for the lift span.
+  // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests, and O(k log k) for the lift span when
+  // the kept sites differ from the previous patch's.
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
     throw_if_cancelled(cancellation_);
     std::vector<Site_index> kept = candidates;
