@@ -113,8 +113,7 @@ class Far_field {
     const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
-      record_sites(kept);
-      if (record_) record_quadruples(kept, dimension, basis);
+      if (record_sites(kept) && record_) record_quadruples(kept, dimension, basis);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
@@ -126,9 +125,12 @@ class Far_field {
   }
 
   std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
-  // Each run of patches keeping the same sites adds them once (duplicates are removed by far_vertices).
-  void record_sites(const std::vector<Site_index>& kept) {
-    if (patch_sites_.empty() || patch_sites_.back() != kept) patch_sites_.push_back(kept);
+  // Each run of patches keeping the same sites adds them once (duplicates are removed by far_vertices);
+  // true when `kept` starts a run.
+  bool record_sites(const std::vector<Site_index>& kept) {
+    if (!patch_sites_.empty() && patch_sites_.back() == kept) return false;
+    patch_sites_.push_back(kept);
+    return true;
   }
   std::vector<std::vector<Site_index>> take_patch_sites() { return std::move(patch_sites_); }
 
@@ -212,11 +214,9 @@ class Far_field {
   // of one of their quadruples (sorted; kept is ascending).
   // `dimension` and `basis`: heaviest_lift_basis of kept, 3 or more (refine() stops below).
   void record_quadruples(const std::vector<Site_index>& kept, int dimension, const std::array<Site_index, 4>& basis) {
-    // Neighbouring patches at the depth limit mostly keep the same sites: recorded once in a row, and the
-    // list compacted whenever it doubles, so it holds at most twice the distinct quadruples and costs one
-    // sort per doubling (tests/data/regression/octree_far_field_sorts_copies_for_11_sites_*).
-    if (kept == last_recorded_) return;
-    last_recorded_ = kept;
+    // Neighbouring patches at the depth limit mostly keep the same sites: refine() records each run once
+    // (record_sites), and the list is compacted whenever it doubles, so it holds at most twice the distinct
+    // quadruples and costs one sort per doubling (tests/data/regression/octree_far_field_sorts_copies_*).
     record_distinct(kept, dimension, basis);
     if (quadruples_.size() >= std::max(kCompactionFloor, 2 * compacted_size_)) {
       cancellable_sort(quadruples_.begin(), quadruples_.end(), cancellation_);
@@ -231,14 +231,10 @@ class Far_field {
     // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
     // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
     // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
-    // per kept set.
+    // per run of patches keeping the same sites.
     if (dimension == 3 && kept.size() > 4) {
-      if (kept != last_kept_) {
-        last_kept_ = kept;
-        const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
-        last_on_one_line_ = std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); });
-      }
-      if (last_on_one_line_) {
+      const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
+      if (std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); })) {
         quadruples_.push_back(basis);
         return;
       }
@@ -252,13 +248,10 @@ class Far_field {
 
   const std::vector<Site>& sites_;
   static constexpr std::size_t kCompactionFloor = 1 << 16;
-  std::vector<Site_index> last_recorded_;  // the last set record_quadruples recorded
   std::size_t compacted_size_ = 0;         // the list's size after its last compaction (all distinct then)
   std::vector<Site_index> span_of_;  // the last set whose lifts' span refine() found, and that span
   int span_dimension_ = 0;
   std::array<Site_index, 4> span_basis_{};
-  std::vector<Site_index> last_kept_;  // the last set record_distinct tested, and the outcome
-  bool last_on_one_line_ = false;
   std::array<double, 3> origin_;
   double radius_;
   bool record_;
