@@ -59,6 +59,14 @@ Box_frame frame_of(const Axis_box& box) {
   return frame;
 }
 
+void sharpen(Centre_expansion& e, const Site& s, const Box_frame& frame) {
+  const Sharp_centre_value sharp = sharp_centre_value(s, frame);
+  if (!sharp.known) return;
+  e.weighted = sharp.value;
+  e.weighted_error = sharp.error;
+  e.weighted_known = true;
+}
+
 double distance_to_box(const Site& s, const Box_frame& frame) {
   const double p[3] = {s.x, s.y, s.z};
   double sum = 0;

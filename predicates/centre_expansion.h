@@ -43,6 +43,7 @@
 #include <cmath>
 
 #include "predicates/axis_box.h"
+#include "predicates/sharp_centre_value.h"
 #include "predicates/site.h"
 #include "predicates/unit_roundoff.h"
 
@@ -72,6 +73,10 @@ struct Centre_expansion {
   std::array<double, 3> gradient;  // (c - x_s) / |c - x_s|, or 0 when c = x_s (a subgradient)
   double magnitude;                // |c - x_s| + |w_s|: the scale of the rounding errors of `weighted`
   bool usable;                     // every magnitude lies where the error bounds hold
+  // |weighted - d_s(c)| <= weighted_error when weighted_known: 8u magnitude when usable (docs/ERROR_BOUNDS.md
+  // item 2), or the sharp value's bound where that replaced it (item 8).
+  double weighted_error;
+  bool weighted_known;
 };
 
 // A witness also needs |y - x_j| at the corners (corner_distance[q], corner q having the upper bound on
@@ -90,6 +95,12 @@ inline bool in_error_bound_range(double sum_of_squares) {
   return sum_of_squares == 0 || (sum_of_squares >= kTinySquare && sum_of_squares <= kHugeSquare);
 }
 
+// Where the plain value is unknown, or its error exceeds a 64th of the box's reach, the sharp value replaces
+// it (sharp_centre_value.h): the centre tests then still decide about a ball whose sphere, far larger than
+// the box, passes near it. Ordinary inputs never come here (docs/benchmarks.md).
+constexpr double kSharpenAbove = 0x1p-6;
+void sharpen(Centre_expansion& e, const Site& s, const Box_frame& frame);
+
 // Inline: the refinement expands every candidate of every box.
 inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) {
   Centre_expansion e;
@@ -104,6 +115,9 @@ inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) 
   e.magnitude = e.distance + std::fabs(weight);
   const double inverse = e.distance > 0 ? 1 / e.distance : 0;
   for (int a = 0; a < 3; ++a) e.gradient[a] = offset[a] * inverse;
+  e.weighted_error = 8 * kUnitRoundoff * e.magnitude;
+  e.weighted_known = e.usable;
+  if (!(e.usable && e.weighted_error <= kSharpenAbove * frame.reach)) sharpen(e, s, frame);
   return e;
 }
 
@@ -179,7 +193,7 @@ double centre_difference(const Site& i, const Centre_expansion& at_i, const Site
 // vertex). 8u (magnitude_s + magnitude_t) bounds the error of the plain difference (docs/ERROR_BOUNDS.md).
 inline bool nearer_at_centre(const Site& s, const Centre_expansion& at_s, const Site& t, const Centre_expansion& at_t) {
   const double difference = at_s.weighted - at_t.weighted;
-  if (std::fabs(difference) > 8 * kUnitRoundoff * (at_s.magnitude + at_t.magnitude)) return difference < 0;
+  if (std::fabs(difference) > at_s.weighted_error + at_t.weighted_error) return difference < 0;
   return centre_difference(s, at_s, t, at_t) < 0;
 }
 
@@ -197,15 +211,16 @@ enum class Centre_outcome { dominated, kept, undecided };
 // candidate is always safe.
 inline Centre_outcome centre_tests(const Centre_expansion& at_j, const Centre_expansion& at_i, const Box_frame& frame,
                                    double slack) {
-  if (!at_i.usable || !at_j.usable) return Centre_outcome::kept;
+  if (!at_i.weighted_known || !at_j.weighted_known) return Centre_outcome::kept;
   const double gap = at_i.weighted - at_j.weighted;
-  const double gap_error = slack * 8 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude);
-  // 8u (magnitude_i + magnitude_j) bounds the error of gap (docs/ERROR_BOUNDS.md item 2): below it, i is
-  // certainly closer at the centre, so not dominated.
+  // The two values' errors bound that of gap (docs/ERROR_BOUNDS.md items 2 and 8): below it, i is certainly
+  // closer at the centre, so not dominated.
+  const double gap_error = slack * (at_i.weighted_error + at_j.weighted_error);
   if (!(gap > -gap_error)) return Centre_outcome::kept;
   // d_i - d_j is 2-Lipschitz and reach >= |x - c| on the box: f(c) > 2 reach decides without the corners
   // (docs/ERROR_BOUNDS.md, "Centre expansion", item 7).
   if (gap - 2 * frame.reach > 1.125 * gap_error) return Centre_outcome::dominated;
+  if (!at_i.usable || !at_j.usable) return Centre_outcome::kept;  // the rest needs the whole expansion
   double linear = 0;
   for (int a = 0; a < 3; ++a) linear += std::fabs(at_i.gradient[a] - at_j.gradient[a]) * frame.half_extent[a];
   if (!(gap - linear > -slack * 16 * kUnitRoundoff * (at_i.magnitude + at_j.magnitude + 2 * frame.reach + linear)))

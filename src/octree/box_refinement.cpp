@@ -20,13 +20,19 @@ constexpr std::size_t kCachedQuadruples = 2048;
 constexpr std::size_t kWitnesses = 4;
 // Boxes filtered between two checks of the cancellation: about a millisecond.
 constexpr std::size_t kBoxesPerCancellationCheck = 1024;
-// Refining stops helping when the candidate count has not dropped for kStagnationLevels levels and the box
-// is tiny against its distance to every candidate centre (kTinyBox half-diagonals): refining cannot
-// separate candidates that tie at a point (a degenerate vertex) or along a curve. Boxes near site centres
-// are never settled this way, nor boxes of more than kStagnantCandidates: nearly cospherical sites
-// (vdrc Ext_I_Congruent_300: 300 of them) have many distinct vertices close together, which refining
-// separates, where enumerating their quadruples would not end. kMaxDepth only bounds the recursion: the
-// doubles span 2098 binades, so split() fails first, and a seed box 2^900 times larger than a cluster of
+// Refining stops helping when the candidate count has not dropped for kStagnationLevels levels: it cannot
+// separate candidates that tie at a point (a degenerate vertex) or along a curve, nor cells that repeat at
+// every scale, as those of a cluster seen from a few dozen box sizes away do (a needle of cells along one
+// axis, or a cluster cut by the sphere of a ball far larger than the box, which acts there as a plane:
+// tests/data/regression/octree_boxes_explode_for_huge_sphere_near_cluster_*). A box of at most
+// kStagnantCandidates is then settled, tiny or not, and its leaf decided exactly whatever its size: at
+// most C(12, 4) = 495 quadruples. Boxes of more are never settled this way: nearly cospherical sites (vdrc
+// Ext_I_Congruent_300: 300 of them) have many distinct vertices close together, which refining separates,
+// where enumerating their quadruples would not end. Complexity: below the first box of at most
+// kStagnantCandidates on a path, the count drops at most kStagnantCandidates - kLeafCandidates times, with
+// fewer than kStagnationLevels levels between drops, so the path ends within (12 - 6 + 1) 4 = 28 levels,
+// whatever the spread of scales. kMaxDepth only bounds the recursion: the doubles span 2098 binades, so
+// split() fails first, and a seed box 2^900 times larger than a cluster of more than kStagnantCandidates
 // sites inside it (sites spread over many orders of magnitude) still refines down to the cluster.
 //
 // A tiny box of more candidates that did not drop from its parent's is settled if they cannot be separated
@@ -161,7 +167,7 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
     stagnant = kept == end - first ? stagnant + 1 : 0;
     const bool settled = kept <= kLeafCandidates || depth >= kMaxDepth ||
                          (kept <= kStagnantCandidates &&
-                          ((stagnant >= kStagnationLevels && tiny_against_candidates(box, end)) ||
+                          (stagnant >= kStagnationLevels ||
                            (stagnant >= kStagnationToSettleHuge && huge_against_candidates(box, end))));
     if (!settled && kept > kLeafCandidates && tiny_against_candidates(box, end)) {
       const Tie tie = classify_tie(end, stagnant >= kStagnationToClassify);
@@ -195,7 +201,7 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
   Centre_expansion* expansion = expansion_.data();
   for (std::size_t k = 0; k < count; ++k) expansion[k] = expand_at_centre(sites[candidate[k]], frame);
 
-  // The witnesses: the usable candidates of least d at the centre, ascending. Only a witness closer at
+  // The witnesses: the candidates of least known d at the centre, ascending. Only a witness closer at
   // the centre can dominate a site on the box.
   std::array<std::size_t, kWitnesses> witness;
   std::size_t witnesses = 0;
@@ -203,7 +209,7 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
     return nearer_at_centre(sites[candidate[k]], expansion[k], sites[candidate[l]], expansion[l]);
   };
   for (std::size_t k = 0; k < count; ++k) {
-    if (!expansion[k].usable) continue;
+    if (!expansion[k].weighted_known) continue;
     std::size_t at = std::min(witnesses, kWitnesses);
     for (; at > 0 && nearer(k, witness[at - 1]); --at)
       if (at < kWitnesses) witness[at] = witness[at - 1];

@@ -211,3 +211,114 @@ TEST_CASE("a witness no larger than the candidate, closer at the eight corners, 
   MESSAGE(required << " pairs closer at the corners, each required to be removed");
   CHECK(required >= 500);
 }
+
+namespace {
+
+// x 2^k exactly, for any k (Mpzf has no exponent range).
+Exact times_power_of_two(Exact x, int k) {
+  while (k != 0) {
+    const int step = std::clamp(k, -1000, 1000);
+    x = x * Exact(std::ldexp(1.0, step));
+    k -= step;
+  }
+  return x;
+}
+
+// sign(d_s(c) unit - bound) exactly, for a bound in box units: sign(sqrt(S) - (w + bound / unit)).
+Sign sign_of_box_value_minus(const Site& s, const Box_frame& frame, double bound) {
+  const Exact dx = Exact(frame.centre[0]) - Exact(s.x), dy = Exact(frame.centre[1]) - Exact(s.y),
+              dz = Exact(frame.centre[2]) - Exact(s.z);
+  const Exact shifted = Exact(s.w) + times_power_of_two(Exact(bound), frame.exponent);  // unit = 2^-exponent
+  return sign_of_root_number(-shifted, Exact(1), dx * dx + dy * dy + dz * dz);
+}
+
+// A ball whose sphere passes within a rounding of `near`: its centre 2^far away in a random direction, its
+// weight the rounded distance (plus -1, 0 or 1 ulp). Near `near`, d_s is then tiny against |c - x_s| + w_s,
+// the plain doubles' error scale: the ball acts there as a plane through `near`.
+Site sphere_through(const std::array<double, 3>& near, int far, Random& random) {
+  Site s;
+  const std::array<double, 3> direction = {random.symmetric(), random.symmetric(), random.symmetric()};
+  s.x = near[0] + std::ldexp(direction[0], far);
+  s.y = near[1] + std::ldexp(direction[1], far);
+  s.z = near[2] + std::ldexp(direction[2], far);
+  // The distance without overflow: scaled down first.
+  const double scale = std::ldexp(1.0, -far);
+  const double distance =
+      std::hypot((s.x - near[0]) * scale, (s.y - near[1]) * scale, (s.z - near[2]) * scale) / scale;
+  const int nudge = random.integer(-1, 1);
+  s.w = nudge < 0 ? std::nextafter(distance, 0.0) : nudge > 0 ? std::nextafter(distance, HUGE_VAL) : distance;
+  return s;
+}
+
+}  // namespace
+
+// The sharp value (sharp_centre_value.h) where the plain doubles fail: near the sphere of a ball up to 2^1000
+// times larger than the box, and for sites beyond the plain tests' range. Checked exactly: d_s(c) lies in
+// [value - error, value + error] (or beyond the clamp, on its side), and the error is small against the box.
+TEST_CASE("the sharp centre value encloses d_s(c) exactly, near huge spheres and beyond the plain range") {
+  const std::uint64_t seed0 = base_seed();
+  int tight = 0, clamped = 0;
+  const int cases = 4000;
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = seed0 + static_cast<std::uint64_t>(k) * 15485863;
+    Random random(seed);
+    const std::array<double, 3> near = {random.symmetric(), random.symmetric(), random.symmetric()};
+    const Axis_box box = dyadic_cube({near[0] + random.eighths(2), near[1] + random.eighths(2), near[2] + random.eighths(2)},
+                                     -random.integer(0, 40));
+    // Half the cases a huge sphere through `near`, half a site far beyond the plain range with any weight.
+    Site s = sphere_through(near, random.integer(10, 1000), random);
+    if (k % 2 == 1) s.w = (random.unit() < 0.5 ? -1 : 1) * std::ldexp(random.unit(), random.integer(-1074, 1023));
+    const int e = random.integer(-4, 4) * 10;
+    const Box_frame frame = frame_of(scaled(box, e));
+    s = scaled_by_power_of_two(s, e);
+    if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z) || !std::isfinite(s.w)) continue;
+    const Sharp_centre_value sharp = sharp_centre_value(s, frame);
+    CAPTURE(k);
+    CAPTURE(seed);
+    REQUIRE(sharp.known);
+    if (sharp.error == 0 && std::fabs(sharp.value) == kSharpValueClamp) {
+      ++clamped;
+      CHECK(sign_of_box_value_minus(s, frame, sharp.value) != (sharp.value > 0 ? Sign::NEGATIVE : Sign::POSITIVE));
+      continue;
+    }
+    CHECK(sign_of_box_value_minus(s, frame, sharp.value - sharp.error) != Sign::NEGATIVE);
+    CHECK(sign_of_box_value_minus(s, frame, sharp.value + sharp.error) != Sign::POSITIVE);
+    // A few units in the last place of the value itself, not of |c - x_s| + |w_s|.
+    tight += sharp.error <= 0x1p-45 * std::max(std::fabs(sharp.value), 1.0);
+  }
+  MESSAGE(tight << " tight and " << clamped << " clamped sharp values of " << cases << ", each checked exactly");
+  CHECK(tight >= cases / 2);
+}
+
+// The octree's defect this fixes (tests/data/regression/octree_boxes_explode_for_huge_sphere_near_cluster_*):
+// a ball whose sphere, 2^far times larger than the box, passes near it could neither be removed there
+// nor remove a small ball, so the boxes refined one level per binade. Now both, soundly, at every scale.
+TEST_CASE("a ball whose sphere is far larger than the box is removed, and removes, near its sphere") {
+  const std::uint64_t seed0 = base_seed();
+  int removed_huge = 0, removed_small = 0;
+  const int cases = 3000;
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = seed0 + static_cast<std::uint64_t>(k) * 104729;
+    Random random(seed);
+    const std::array<double, 3> near = {random.eighths(4), random.eighths(4), random.eighths(4)};
+    const Site huge = sphere_through(near, random.integer(60, 1000), random);
+    // A small ball near the sphere, and a box a few box sizes from both.
+    const Site small{near[0] + random.eighths(4), near[1] + random.eighths(4), near[2] + random.eighths(4),
+                     std::round(random.unit() * 8) / 8};
+    const Axis_box box = dyadic_cube({near[0] + random.eighths(16), near[1] + random.eighths(16), near[2] + random.eighths(16)},
+                                     -random.integer(0, 3));
+    CAPTURE(k);
+    CAPTURE(seed);
+    const Outcome huge_removed = check_pair(box, huge, small, random);
+    const Outcome small_removed = check_pair(box, small, huge, random);
+    CHECK(huge_removed.sound);
+    CHECK(small_removed.sound);
+    CHECK(!(huge_removed.dominated && small_removed.dominated));
+    removed_huge += huge_removed.dominated;
+    removed_small += small_removed.dominated;
+  }
+  MESSAGE(removed_huge << " huge and " << removed_small << " small balls removed of " << cases << " pairs");
+  // Not vacuous: with the plain doubles alone neither count exceeded a handful (the error scale is 2^far).
+  CHECK(removed_huge >= cases / 5);
+  CHECK(removed_small >= cases / 5);
+}
