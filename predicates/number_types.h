@@ -12,6 +12,8 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/Interval_nt.h>
 
+#include <cmath>
+
 #include "predicates/sign.h"
 
 namespace apollonius {
@@ -36,6 +38,18 @@ inline Sign certain_sign(double x) { return x > 0 ? Sign::POSITIVE : x < 0 ? Sig
 // The integer z as an Exact. CGAL 5.5's Mpzf(const Gmpz&) drops the sign (it sizes the number by
 // mpz_size, the magnitude's) and mishandles 0 (mpz_scan1 finds no bit): use this instead.
 Exact exact_integer(const CGAL::Gmpz& z);
+
+// x 2^k for any k, one normal power of two at a time: exact for Exact (no exponent range), certified for
+// Interval inside a Rounding_guard (an overflow goes to infinity, an underflow outward).
+template <class NT>
+NT times_power_of_two(NT x, int k) {
+  while (k != 0) {
+    const int step = k < -1000 ? -1000 : k > 1000 ? 1000 : k;
+    x = x * NT(std::ldexp(1.0, step));
+    k -= step;
+  }
+  return x;
+}
 
 // An interval that contains x, valid in any rounding mode and beyond the double range (then one bound is
 // infinite or zero; tests/data/regression/gmpzf_to_interval_beyond_double_range).

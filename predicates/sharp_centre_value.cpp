@@ -9,30 +9,6 @@
 #include "predicates/unit_roundoff.h"
 
 namespace apollonius {
-namespace {
-
-// x 2^k exactly, for any k: Mpzf has no exponent range, and each factor is a normal double.
-Exact times_power_of_two(Exact x, int k) {
-  while (k != 0) {
-    const int step = std::clamp(k, -1000, 1000);
-    x = x * Exact(std::ldexp(1.0, step));
-    k -= step;
-  }
-  return x;
-}
-
-// x 2^k in intervals, for any k (inside a Rounding_guard): overflow goes to infinity, underflow to the
-// nearest bound outward, both certified.
-Interval times_power_of_two(Interval x, int k) {
-  while (k != 0) {
-    const int step = std::clamp(k, -1000, 1000);
-    x = x * Interval(std::ldexp(1.0, step));
-    k -= step;
-  }
-  return x;
-}
-
-}  // namespace
 
 Sharp_centre_value sharp_centre_value(const Site& s, const Box_frame& frame) {
   Sharp_centre_value result;

@@ -214,16 +214,6 @@ TEST_CASE("a witness no larger than the candidate, closer at the eight corners, 
 
 namespace {
 
-// x 2^k exactly, for any k (Mpzf has no exponent range).
-Exact times_power_of_two(Exact x, int k) {
-  while (k != 0) {
-    const int step = std::clamp(k, -1000, 1000);
-    x = x * Exact(std::ldexp(1.0, step));
-    k -= step;
-  }
-  return x;
-}
-
 // sign(d_s(c) unit - bound) exactly, for a bound in box units: sign(sqrt(S) - (w + bound / unit)).
 Sign sign_of_box_value_minus(const Site& s, const Box_frame& frame, double bound) {
   const Exact dx = Exact(frame.centre[0]) - Exact(s.x), dy = Exact(frame.centre[1]) - Exact(s.y),
