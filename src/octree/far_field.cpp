@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "diagram/cancellable_steps.h"
@@ -63,6 +64,18 @@ Interval interval_sqrt(const Interval& x) {
 
 template <class Kernel>
 class Far_field {
+  // The lifts' span of each set of kept sites met so far (heaviest_lift_basis), and whether their power
+  // lifts lie in it (record_distinct). Patches keep few distinct sets, but not in runs: sibling patches
+  // alternate between two or three, and recomputing at each change made 1,895 exact power-lift tests for
+  // 11 sites (tests/data/regression/far_field_span_recomputed_for_alternating_patches.balls). Cleared
+  // when it reaches kRememberedSpans sets, so its memory stays bounded.
+  struct Kept_span {
+    enum Answer : signed char { unknown, no, yes };
+    int dimension;
+    std::array<Site_index, 4> basis;
+    Answer on_one_line = unknown;
+  };
+
  public:
   // With record_quadruples false, the patches give their sites only (the quadruples come from elsewhere).
   Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius,
@@ -75,8 +88,8 @@ class Far_field {
   }
 
   // Termination: each call either stops or recurses into 8 children one level deeper, and stops at
-  // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests, and O(k log k) for the lift span when
-  // the kept sites differ from the previous patch's.
+  // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests and an O(k log(sets)) lookup; the lift
+  // span costs O(k log k) once per distinct set of kept sites (span_of).
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
     throw_if_cancelled(cancellation_);
     std::vector<Site_index> kept = candidates;
@@ -100,20 +113,15 @@ class Far_field {
     }
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle) have
     // no vertex among themselves (lift_outside_span.h), wherever they are: nothing to refine.
-    if (kept != span_of_) {  // neighbouring and nested patches mostly keep the same sites
-      span_of_ = kept;
-      span_dimension_ = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), span_basis_);
-    }
-    const int dimension = span_dimension_;
-    const std::array<Site_index, 4> basis = span_basis_;
-    if (dimension <= 2) {
+    Kept_span& span = span_of(kept);  // valid until a child's span_of may clear the map: not used after them
+    if (span.dimension <= 2) {
       record_sites(kept);
       return;
     }
     const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
-      if (record_sites(kept) && record_) record_quadruples(kept, dimension, basis);
+      if (record_sites(kept) && record_) record_quadruples(kept, span);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
@@ -212,12 +220,12 @@ class Far_field {
 
   // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
   // of one of their quadruples (sorted; kept is ascending).
-  // `dimension` and `basis`: heaviest_lift_basis of kept, 3 or more (refine() stops below).
-  void record_quadruples(const std::vector<Site_index>& kept, int dimension, const std::array<Site_index, 4>& basis) {
+  // `span`: the lifts' span of kept, of dimension 3 or more (refine() stops below).
+  void record_quadruples(const std::vector<Site_index>& kept, Kept_span& span) {
     // Neighbouring patches at the depth limit mostly keep the same sites: refine() records each run once
     // (record_sites), and the list is compacted whenever it doubles, so it holds at most twice the distinct
     // quadruples and costs one sort per doubling (tests/data/regression/octree_far_field_sorts_copies_*).
-    record_distinct(kept, dimension, basis);
+    record_distinct(kept, span);
     if (quadruples_.size() >= std::max(kCompactionFloor, 2 * compacted_size_)) {
       cancellable_sort(quadruples_.begin(), quadruples_.end(), cancellation_);
       quadruples_.erase(std::unique(quadruples_.begin(), quadruples_.end()), quadruples_.end());
@@ -225,17 +233,23 @@ class Far_field {
     }
   }
 
-  void record_distinct(const std::vector<Site_index>& kept, int dimension, const std::array<Site_index, 4>& basis) {
+  void record_distinct(const std::vector<Site_index>& kept, Kept_span& span) {
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
     // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
     // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
     // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
     // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
     // per run of patches keeping the same sites.
-    if (dimension == 3 && kept.size() > 4) {
-      const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
-      if (std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); })) {
-        quadruples_.push_back(basis);
+    if (span.dimension == 3 && kept.size() > 4) {
+      if (span.on_one_line == Kept_span::unknown) {
+        const std::array<Site_index, 4>& basis = span.basis;
+        const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
+        span.on_one_line = std::none_of(kept.begin(), kept.end(), [&](Site_index s) {
+          return Kernel::outside_power_lift_span(lifted, sites_[s]);
+        }) ? Kept_span::yes : Kept_span::no;
+      }
+      if (span.on_one_line == Kept_span::yes) {
+        quadruples_.push_back(span.basis);
         return;
       }
     }
@@ -249,9 +263,16 @@ class Far_field {
   const std::vector<Site>& sites_;
   static constexpr std::size_t kCompactionFloor = 1 << 16;
   std::size_t compacted_size_ = 0;         // the list's size after its last compaction (all distinct then)
-  std::vector<Site_index> span_of_;  // the last set whose lifts' span refine() found, and that span
-  int span_dimension_ = 0;
-  std::array<Site_index, 4> span_basis_{};
+  static constexpr std::size_t kRememberedSpans = 4096;
+  std::map<std::vector<Site_index>, Kept_span> spans_;
+  Kept_span& span_of(const std::vector<Site_index>& kept) {
+    const auto found = spans_.find(kept);
+    if (found != spans_.end()) return found->second;
+    if (spans_.size() >= kRememberedSpans) spans_.clear();
+    Kept_span span;
+    span.dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), span.basis);
+    return spans_.emplace(kept, span).first->second;
+  }
   std::array<double, 3> origin_;
   double radius_;
   bool record_;

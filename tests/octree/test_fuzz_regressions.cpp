@@ -2,12 +2,14 @@
 // and run through the normal build: the octree must give the brute force's diagram on each.
 #include <doctest/doctest.h>
 
+#include <cstdint>
 #include <string>
 
 #include "reference/brute_force_diagram.h"
 #include "support/diagram_checks.h"
 #include "io/read_sites.h"
 #include "octree/octree_diagram.h"
+#include "predicates/predicate_counter.h"
 #include "support/time_limit.h"
 
 using namespace apollonius;
@@ -218,4 +220,18 @@ TEST_CASE("regression: octree_boxes_explode_for_huge_sphere_near_cluster") {
     CHECK(statistics.boxes < 20000);
     MESSAGE(name << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
   }
+}
+
+// fuzz_vertices with the 2 s limit, 2026-11-28 (sixth stop): 11 sites, two of them 1.2e268 away. The far
+// field's sibling patches alternate between a few sets of kept sites, and each change recomputed their
+// lifts' span and power-lift test: 1,895 exact power_lift_outside_span calls (4.6 s under the sanitizers).
+// Each set's span is now remembered (far_field.cpp, span_of): 25.
+TEST_CASE("regression: far_field_span_recomputed_for_alternating_patches") {
+  reset_predicate_statistics();
+  check_octree_equals_brute_force("far_field_span_recomputed_for_alternating_patches.balls");
+  std::uint64_t power_lift_tests = 0;
+  for (const Predicate_statistics& p : predicate_statistics())
+    if (p.name == "power_lift_outside_span") power_lift_tests = p.evaluations;
+  CHECK(power_lift_tests < 200);
+  reset_predicate_statistics();
 }
