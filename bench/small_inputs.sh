@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Small inputs (issue 20: at most 50 sites in at most 50 ms): `apollonius3d vertices --threads 1` on every
-# bundled and regression input of at most MAX_SITES sites, wall time (the best of REPEAT runs: startup
+# bundled, regression and open input of at most MAX_SITES sites, wall time (the best of REPEAT runs: startup
 # included, as a user sees it) and the octree's box count, slowest first. Exits 1 if any is over LIMIT ms.
 # Usage: bench/small_inputs.sh [BINARY (default build/apollonius3d)] [LIMIT ms (default 50)]
 #        [MAX_SITES (default 50)] [REPEAT (default 3)] [TIMEOUT s per run (default 120)]
@@ -9,7 +9,8 @@ cd "$(dirname "$0")/.."
 binary=${1:-build/apollonius3d} limit=${2:-50} max_sites=${3:-50} repeat=${4:-3} timeout_s=${5:-120}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for input in tests/data/*.balls tests/data/regression/*.balls; do
+for input in tests/data/*.balls tests/data/regression/*.balls tests/data/open/*.balls; do
+  [ -e "$input" ] || continue
   sites=$(grep -cv '^#' "$input" || true)
   [ "$sites" -le "$max_sites" ] || continue
   best=""
