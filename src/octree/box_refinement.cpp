@@ -30,8 +30,10 @@ constexpr std::size_t kBoxesPerCancellationCheck = 1024;
 // Ext_I_Congruent_300: 300 of them) have many distinct vertices close together, which refining separates,
 // where enumerating their quadruples would not end. Complexity: below the first box of at most
 // kStagnantCandidates on a path, the count drops at most kStagnantCandidates - kLeafCandidates times, with
-// fewer than kStagnationLevels levels between drops, so the path ends within (12 - 6 + 1) 4 = 28 levels,
-// whatever the spread of scales. kMaxDepth only bounds the recursion: the doubles span 2098 binades, so
+// fewer than kStagnationLevels levels between drops, so the path ends within (12 - 6 + 1) 2 = 14 levels,
+// whatever the spread of scales. Two levels rather than four: along a surface where the candidates tie to
+// first order every extra level quadruples the boxes (a subnormal cluster and a ball of size 4: 31,000
+// boxes at 4, 2,061 at 2), and the families and proteins take the same time either way (docs/history.md). kMaxDepth only bounds the recursion: the doubles span 2098 binades, so
 // split() fails first, and a seed box 2^900 times larger than a cluster of more than kStagnantCandidates
 // sites inside it (sites spread over many orders of magnitude) still refines down to the cluster.
 //
@@ -42,7 +44,7 @@ constexpr std::size_t kBoxesPerCancellationCheck = 1024;
 // whose closure holds v keeps every site tied there, so it settles once tiny, log2(box size / distance to
 // the centres) + 7 levels down, for any number of tied sites, instead of descending to the last binade
 // (1,075 levels about v = 0). Along a curve of ties the same holds for the boxes that touch it.
-constexpr int kStagnationLevels = 4;
+constexpr int kStagnationLevels = 2;
 // A tiny box of more than kLeafCandidates whose candidates' lifts span at most a plane is settled at
 // once (no vertex among them, whatever the box). Along a line where many such sites tie (equal balls on a
 // circle, along its axis) the boxes beside the line keep losing a candidate or two per level, so waiting
