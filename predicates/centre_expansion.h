@@ -97,7 +97,8 @@ inline bool in_error_bound_range(double sum_of_squares) {
 
 // Where the plain value is unknown, or its error exceeds a 64th of the box's reach, the sharp value replaces
 // it (sharp_centre_value.h): the centre tests then still decide about a ball whose sphere, far larger than
-// the box, passes near it. Ordinary inputs never come here (docs/benchmarks.md).
+// the box, passes near it. Ordinary inputs never come here: their box counts did not change
+// (docs/history.md).
 constexpr double kSharpenAbove = 0x1p-6;
 void sharpen(Centre_expansion& e, const Site& s, const Box_frame& frame);
 

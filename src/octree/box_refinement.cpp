@@ -32,10 +32,12 @@ constexpr std::size_t kBoxesPerCancellationCheck = 1024;
 // kStagnantCandidates on a path, the count drops at most kStagnantCandidates - kLeafCandidates times, with
 // fewer than kStagnationLevels levels between drops, so the path ends within (12 - 6 + 1) 2 = 14 levels,
 // whatever the spread of scales. Two levels rather than four: along a surface where the candidates tie to
-// first order every extra level quadruples the boxes (a subnormal cluster and a ball of size 4: 31,000
-// boxes at 4, 2,061 at 2), and the families and proteins take the same time either way (docs/history.md). kMaxDepth only bounds the recursion: the doubles span 2098 binades, so
-// split() fails first, and a seed box 2^900 times larger than a cluster of more than kStagnantCandidates
-// sites inside it (sites spread over many orders of magnitude) still refines down to the cluster.
+// first order every extra level quadruples the boxes (tests/data/regression/
+// octree_stagnant_boxes_along_bisector_of_subnormal_cluster_*), and the families and proteins take the same
+// time either way (docs/history.md, sixth stop of 2026-11-28). kMaxDepth only bounds the recursion: the
+// doubles span 2098 binades, so split() fails first, and a seed box 2^900 times larger than a cluster of
+// more than kStagnantCandidates sites inside it (sites spread over many orders of magnitude) still refines
+// down to the cluster.
 //
 // A tiny box of more candidates that did not drop from its parent's is settled if they cannot be separated
 // for a reason decided exactly (classify_tie): their lifts span at most a plane (sites tied along a curve,
