@@ -1,6 +1,7 @@
 #include "predicates/sharp_centre_value.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "predicates/centre_expansion.h"
@@ -34,7 +35,7 @@ Sharp_centre_value sharp_centre_value(const Site& s, const Box_frame& frame) {
   Rounding_guard guard;
   Interval squares(0);
   for (int a = 0; a < 3; ++a) squares += CGAL::square(enclosing_interval(offset[a]));
-  const Interval norm = CGAL::sqrt(squares);  // |O| 2^-E, in [1, 3.5)
+  const Interval norm = CGAL::sqrt(squares);  // |O| 2^-E < 3.5, and |O| 2^-E + W 2^-E >= 1 when W > 0
   const Interval weight_interval = enclosing_interval(weight);
   Interval value;
   if (s.w <= 0) {
