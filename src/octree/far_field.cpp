@@ -239,7 +239,7 @@ class Far_field {
     // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
     // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
     // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
-    // per run of patches keeping the same sites.
+    // per distinct set of kept sites (span_of).
     if (span.dimension == 3 && kept.size() > 4) {
       if (span.on_one_line == Kept_span::unknown) {
         const std::array<Site_index, 4>& basis = span.basis;
