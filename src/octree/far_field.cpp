@@ -64,16 +64,15 @@ Interval interval_sqrt(const Interval& x) {
 
 template <class Kernel>
 class Far_field {
-  // The lifts' span of each set of kept sites met so far (heaviest_lift_basis), and whether their power
-  // lifts lie in it (record_distinct). Patches keep few distinct sets, but not in runs: sibling patches
-  // alternate between two or three, and recomputing at each change made 1,895 exact power-lift tests for
-  // 11 sites (tests/data/regression/far_field_span_recomputed_for_alternating_patches.balls). Cleared
-  // when it reaches kRememberedSpans sets, so its memory stays bounded.
+  // The lifts' span of each set of kept sites met so far (heaviest_lift_basis), and whether the set's
+  // quadruples were recorded. Patches keep few distinct sets, but not in runs: sibling patches alternate
+  // between two or three, and recomputing at each change made 1,895 exact power-lift tests for 11 sites
+  // (tests/data/regression/far_field_span_recomputed_for_alternating_patches.balls). Cleared when it
+  // reaches kRememberedSpans sets, so its memory stays bounded.
   struct Kept_span {
-    enum Answer : signed char { unknown, no, yes };
     int dimension;
     std::array<Site_index, 4> basis;
-    Answer on_one_line = unknown;
+    bool quadruples_recorded = false;
   };
 
  public:
@@ -121,7 +120,8 @@ class Far_field {
     const int stagnant = kept.size() == candidates.size() ? p.stagnant + 1 : 0;
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
-      if (record_sites(kept) && record_) record_quadruples(kept, span);
+      record_sites(kept);
+      if (record_ && !span.quadruples_recorded) record_quadruples(kept, span);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
@@ -133,12 +133,9 @@ class Far_field {
   }
 
   std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
-  // Each run of patches keeping the same sites adds them once (duplicates are removed by far_vertices);
-  // true when `kept` starts a run.
-  bool record_sites(const std::vector<Site_index>& kept) {
-    if (!patch_sites_.empty() && patch_sites_.back() == kept) return false;
-    patch_sites_.push_back(kept);
-    return true;
+  // Each run of patches keeping the same sites adds them once (duplicates are removed by far_vertices).
+  void record_sites(const std::vector<Site_index>& kept) {
+    if (patch_sites_.empty() || patch_sites_.back() != kept) patch_sites_.push_back(kept);
   }
   std::vector<std::vector<Site_index>> take_patch_sites() { return std::move(patch_sites_); }
 
@@ -222,9 +219,11 @@ class Far_field {
   // of one of their quadruples (sorted; kept is ascending).
   // `span`: the lifts' span of kept, of dimension 3 or more (refine() stops below).
   void record_quadruples(const std::vector<Site_index>& kept, Kept_span& span) {
-    // Neighbouring patches at the depth limit mostly keep the same sites: refine() records each run once
-    // (record_sites), and the list is compacted whenever it doubles, so it holds at most twice the distinct
-    // quadruples and costs one sort per doubling (tests/data/regression/octree_far_field_sorts_copies_*).
+    // Neighbouring patches at the depth limit mostly keep the same sites: each set is recorded once while
+    // span_of remembers it, and the list is compacted whenever it doubles, so it holds at most twice the
+    // distinct quadruples and costs one sort per doubling
+    // (tests/data/regression/octree_far_field_sorts_copies_*).
+    span.quadruples_recorded = true;
     record_distinct(kept, span);
     if (quadruples_.size() >= std::max(kCompactionFloor, 2 * compacted_size_)) {
       cancellable_sort(quadruples_.begin(), quadruples_.end(), cancellation_);
@@ -233,23 +232,18 @@ class Far_field {
     }
   }
 
-  void record_distinct(const std::vector<Site_index>& kept, Kept_span& span) {
+  void record_distinct(const std::vector<Site_index>& kept, const Kept_span& span) {
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
     // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
     // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
     // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
     // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
-    // per distinct set of kept sites (span_of).
+    // per distinct set of kept sites.
     if (span.dimension == 3 && kept.size() > 4) {
-      if (span.on_one_line == Kept_span::unknown) {
-        const std::array<Site_index, 4>& basis = span.basis;
-        const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
-        span.on_one_line = std::none_of(kept.begin(), kept.end(), [&](Site_index s) {
-          return Kernel::outside_power_lift_span(lifted, sites_[s]);
-        }) ? Kept_span::yes : Kept_span::no;
-      }
-      if (span.on_one_line == Kept_span::yes) {
-        quadruples_.push_back(span.basis);
+      const std::array<Site_index, 4>& basis = span.basis;
+      const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
+      if (std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); })) {
+        quadruples_.push_back(basis);
         return;
       }
     }
