@@ -36,6 +36,18 @@ struct Compare_vertices_predicate {
       if (const Sign s = compare_numbers(p[j], q[j]); s != Sign::ZERO) return s;
     return Sign::ZERO;
   }
+
+  // evaluate<Interval> without exceptions: most comparisons are of one vertex found from two quadruples
+  // of its tie set, which only the exact stage can show equal.
+  static std::optional<Sign> interval_stage(const Vertex& u, const Vertex& v) {
+    const std::array<Interval, 4> p = u.point_interval(), q = v.point_interval();
+    for (int j = 0; j < 4; ++j) {
+      const std::optional<Sign> s = sign_if_certain(p[j] - q[j]);
+      if (!s) return std::nullopt;
+      if (*s != Sign::ZERO) return s;
+    }
+    return Sign::ZERO;
+  }
 };
 
 inline const Filtered_predicate<Compare_vertices_predicate> compare_vertices{};

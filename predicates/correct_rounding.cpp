@@ -46,10 +46,10 @@ Sign compare_with(const Root_number<Exact>& x, const Exact& m) {
   return compare(x, Root_number<Exact>{m, Exact(0), Exact(0), Exact(1)});
 }
 
-}  // namespace
 
-double approximate(const Root_number<Exact>& x) {
-  Mpfr a(x.a), b(x.b), d(x.d), den(x.denominator), result;
+// x in `result`, rounded to 256 bits, without cancellation.
+void approximate_into(const Root_number<Exact>& x, Mpfr& result) {
+  Mpfr a(x.a), b(x.b), d(x.d), den(x.denominator);
   const Sign sa = certain_sign(x.a), sb = certain_sign(x.b);
   mpfr_sqrt(d.get(), d.get(), MPFR_RNDN);
   if (sb == Sign::ZERO || sa == Sign::ZERO || sa == sb || certain_sign(x.d) == Sign::ZERO) {
@@ -62,7 +62,21 @@ double approximate(const Root_number<Exact>& x) {
     mpfr_div(result.get(), numerator.get(), conjugate.get(), MPFR_RNDN);
   }
   mpfr_div(result.get(), result.get(), den.get(), MPFR_RNDN);
+}
+
+}  // namespace
+
+double approximate(const Root_number<Exact>& x) {
+  Mpfr result;
+  approximate_into(x, result);
   return mpfr_get_d(result.get(), MPFR_RNDN);
+}
+
+std::optional<long> binary_exponent(const Root_number<Exact>& x) {
+  Mpfr result;
+  approximate_into(x, result);
+  if (mpfr_zero_p(result.get())) return std::nullopt;
+  return static_cast<long>(mpfr_get_exp(result.get()));
 }
 
 double to_nearest_double(const Root_number<Exact>& x) {

@@ -14,8 +14,11 @@ namespace apollonius {
 
 // Predicate must provide `static constexpr const char* name` and `template <class NT> static R evaluate(...)`;
 // it may provide `static std::optional<R> static_filter(...)`, a cheaper first stage in plain doubles with
-// a derived error bound (docs/ERROR_BOUNDS.md), which answers only when certain, and `using Exact_number =
-// Rational;` when its exact stage divides (the default, Exact, never does).
+// a derived error bound (docs/ERROR_BOUNDS.md), which answers only when certain; it may provide
+// `static std::optional<R> interval_stage(...)`, which replaces `evaluate<Interval>` (inside the same
+// Rounding_guard) and answers nothing instead of throwing, where most evaluations go on to the exact
+// stage and an exception would cost more than the predicate; and `using Exact_number = Rational;` when
+// its exact stage divides (the default, Exact, never does).
 template <class P, class = void>
 struct Exact_number_of {
   using type = Exact;
@@ -34,7 +37,10 @@ class Filtered_predicate {
     if constexpr (has_static_filter<Predicate, Args...>(0)) {
       if (const auto certain = Predicate::static_filter(args...)) return *certain;
     }
-    {
+    if constexpr (has_interval_stage<Predicate, Args...>(0)) {
+      Rounding_guard guard;
+      if (const auto certain = Predicate::interval_stage(args...)) return *certain;
+    } else {
       Rounding_guard guard;
       try {
         return Predicate::template evaluate<Interval>(args...);
@@ -58,6 +64,15 @@ class Filtered_predicate {
   }
   template <class P, class... Args>
   static constexpr bool has_static_filter(...) {
+    return false;
+  }
+
+  template <class P, class... Args>
+  static constexpr auto has_interval_stage(int) -> decltype(P::interval_stage(std::declval<const Args&>()...), true) {
+    return true;
+  }
+  template <class P, class... Args>
+  static constexpr bool has_interval_stage(...) {
     return false;
   }
 

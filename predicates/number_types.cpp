@@ -10,6 +10,11 @@ Exact exact_integer(const CGAL::Gmpz& z) {
   return z < 0 ? -magnitude : magnitude;
 }
 
+long binary_exponent(const Exact& x) {
+  const Rational q = static_cast<Rational>(x);  // denominator a power of two
+  return static_cast<long>(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) - static_cast<long>(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+}
+
 // CGAL::Mpzf::to_interval keeps the mantissa's top 53 bits exactly and the next integer up, then scales
 // both by std::ldexp(1, e) in interval arithmetic. That scale must be rounded to nearest: under a
 // Rounding_guard's upward rounding a scale below the subnormal range becomes denorm_min instead of 0, and

@@ -13,6 +13,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <cmath>
+#include <optional>
 
 #include "predicates/sign.h"
 
@@ -22,10 +23,16 @@ using Interval = CGAL::Interval_nt<false>;
 using Exact = CGAL::Mpzf;
 using Rational = CGAL::Gmpq;
 
-inline Sign certain_sign(const Interval& x) {
+// The sign of every number of x, or nothing: for stages where uncertainty is common (filtered_predicate.h).
+inline std::optional<Sign> sign_if_certain(const Interval& x) {
   if (x.inf() > 0) return Sign::POSITIVE;
   if (x.sup() < 0) return Sign::NEGATIVE;
   if (x.inf() == 0 && x.sup() == 0) return Sign::ZERO;
+  return std::nullopt;
+}
+
+inline Sign certain_sign(const Interval& x) {
+  if (const std::optional<Sign> s = sign_if_certain(x)) return *s;
   throw Uncertain_sign();
 }
 
@@ -50,6 +57,9 @@ NT times_power_of_two(NT x, int k) {
   }
   return x;
 }
+
+// floor(log2 |x|) for x != 0, at any magnitude.
+long binary_exponent(const Exact& x);
 
 // An interval that contains x, valid in any rounding mode and beyond the double range (then one bound is
 // infinite or zero; tests/data/regression/gmpzf_to_interval_beyond_double_range).

@@ -1,8 +1,12 @@
 #include "predicates/vertex.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 
+#include "predicates/correct_rounding.h"
 #include "predicates/line_roots.h"
 #include "predicates/rounding_guard.h"
 #include "predicates/vertices_of.h"
@@ -10,21 +14,87 @@
 namespace apollonius {
 namespace {
 
-// Interval enclosure of X from its exact value.
-Vertex_coordinates<Interval> enclose(const Vertex_coordinates<Exact>& X) {
+// An interval holding (a + b sqrt(d)) / denominator. Where a and b sqrt(d) have opposite signs it is taken
+// as (a^2 - b^2 d) / (a - b sqrt(d)), whose numerator is exact and whose denominator adds two numbers of one
+// sign, so that it stays a few ulps wide where the terms cancel (the vertex near its quadruple's sites
+// while the other root is far).
+Interval enclose_root_number(const Exact& a, const Exact& b, const Exact& d, const Interval& root,
+                             const Interval& denominator) {
+  const Sign sa = certain_sign(a), sb = certain_sign(b);
+  if (sa == Sign::ZERO || sb == Sign::ZERO || sa == sb)
+    return (enclosing_interval(a) + enclosing_interval(b) * root) / denominator;
+  return enclosing_interval(a * a - b * b * d) / ((enclosing_interval(a) - enclosing_interval(b) * root) * denominator);
+}
+
+// Interval enclosure of X 2^-k from the exact value of X. Where D or d lies beyond the double range (sites
+// one ulp off a lattice make both underflow, and the plain quotient unbounded, where X is of ordinary
+// size), each X_j = (a_j + b_j sqrt(d)) / D is taken as (a_j + b_j 2^t sqrt(d 2^-2t)) / (D 2^-n) 2^-n,
+// with exact powers of two that bring D, d, and then a_j and b_j 2^t near 1.
+std::array<Interval, 4> enclose(const Vertex_coordinates<Exact>& X, long k = 0) {
   Rounding_guard guard;
-  Vertex_coordinates<Interval> box;
-  const Interval root = CGAL::sqrt(enclosing_interval(X.discriminant));
-  const Interval denominator = enclosing_interval(X.denominator);
-  for (int j = 0; j < 4; ++j)
-    box.scaled[j] = (enclosing_interval(X.scaled[j].a) + enclosing_interval(X.scaled[j].b) * root) / denominator;
+  if (k == 0) {  // first as they are: D and d are mostly well within the range
+    const Interval root = CGAL::sqrt(enclosing_interval(X.discriminant));
+    const Interval denominator = enclosing_interval(X.denominator);
+    if (denominator.inf() >= 0x1p-900 && denominator.sup() <= 0x1p900 && root.sup() <= 0x1p900) {
+      std::array<Interval, 4> box;
+      bool tight = true;  // else some part underflowed or overflowed
+      for (int j = 0; j < 4; ++j) {
+        box[j] = enclose_root_number(X.scaled[j].a, X.scaled[j].b, X.discriminant, root, denominator);
+        const double magnitude = std::max(std::fabs(box[j].inf()), std::fabs(box[j].sup()));
+        tight = tight && std::isfinite(magnitude) && box[j].sup() - box[j].inf() <= magnitude * 0x1p-40;
+      }
+      if (tight) return box;
+    }
+  }
+  const int n = static_cast<int>(binary_exponent(X.denominator));  // D > 0
+  const bool has_root = certain_sign(X.discriminant) != Sign::ZERO;
+  const int t = has_root ? static_cast<int>(binary_exponent(X.discriminant) / 2) : 0;
+  const Exact d = has_root ? times_power_of_two(X.discriminant, -2 * t) : Exact(0);
+  const Interval root = CGAL::sqrt(enclosing_interval(d));
+  const Interval denominator = enclosing_interval(times_power_of_two(X.denominator, -n));
+  std::array<Interval, 4> box;
+  for (int j = 0; j < 4; ++j) {
+    // X_j = (a + b sqrt(d)) 2^(m - n) / D with a, b (a part each) brought near 1 by 2^-m as well.
+    const Exact& a = X.scaled[j].a;
+    const Exact b = times_power_of_two(X.scaled[j].b, t);
+    long m = std::numeric_limits<long>::min();
+    for (const Exact* part : {&a, &b})
+      if (certain_sign(*part) != Sign::ZERO) m = std::max(m, binary_exponent(*part));
+    if (m == std::numeric_limits<long>::min()) {  // X_j = 0
+      box[j] = Interval(0);
+      continue;
+    }
+    const int shift = static_cast<int>(m);
+    const Interval near_one = enclose_root_number(times_power_of_two(a, -shift), times_power_of_two(b, -shift), d, root, denominator);
+    box[j] = times_power_of_two(near_one, static_cast<int>(m - n - k));
+  }
   return box;
 }
+
+// Where a plain box's products with site coordinates stop being normal doubles.
+constexpr long kPlainRange = 500;
 
 }  // namespace
 
 Vertex::Vertex(const Quadruple& quadruple, Root root, std::shared_ptr<const Vertex_coordinates<Exact>> exact)
-    : quadruple_(quadruple), root_(root), box_(enclose(*exact)), exact_(std::move(exact)) {}
+    : quadruple_(quadruple),
+      root_(root),
+      exact_(std::move(exact)) {
+  enclose_exact();
+}
+
+void Vertex::enclose_exact() {
+  box_.scaled = enclose(*exact_);
+  double magnitude = 0;
+  for (const Interval& x : box_.scaled) magnitude = std::max({magnitude, -x.inf(), x.sup()});
+  if (magnitude >= std::ldexp(1.0, -kPlainRange) && magnitude <= std::ldexp(1.0, kPlainRange)) return;
+  std::optional<long> largest;
+  for (const Quadratic<Exact>& x : exact_->scaled)
+    if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact_->discriminant, exact_->denominator}))
+      largest = std::max(largest.value_or(*e), *e);
+  if (largest && (*largest > kPlainRange || *largest < -kPlainRange))
+    scaled_box_ = std::make_shared<const Scaled_box>(Scaled_box{*largest, enclose(*exact_, *largest)});
+}
 
 template <>
 const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const {

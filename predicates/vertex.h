@@ -51,6 +51,14 @@ struct Line_root {
   Root_number<NT> lambda;
 };
 
+// X_j lies in scaled[j] * 2^exponent: the enclosure of a vertex whose X lies beyond the range where the
+// plain box's products stay normal doubles (a vertex of nearly coplanar sites, 10^320 away, or one among
+// subnormal sites), so that the filters can still compare it with sites of ordinary size.
+struct Scaled_box {
+  long exponent;
+  std::array<Interval, 4> scaled;
+};
+
 class Vertex {
  public:
   Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box)
@@ -78,13 +86,21 @@ class Vertex {
   const std::array<Sign, 3>& rounding_sides() const;
   const std::array<Sign, 3>* rounding_sides_if_computed() const { return sides_.get(); }
 
+  // For a vertex made from its exact coordinates (vertices_of's exact stage) whose X lies beyond
+  // [2^-500, 2^500]; else null.
+  const Scaled_box* scaled_box() const { return scaled_box_.get(); }
+
  private:
+  // box_ from exact_, a few ulps wide, and scaled_box_ where X is out of range.
+  void enclose_exact();
+
   Quadruple quadruple_;
   Root root_;
-  Vertex_coordinates<Interval> box_;
+  Vertex_coordinates<Interval> box_;  // holds X
   mutable std::shared_ptr<const Vertex_coordinates<Exact>> exact_;  // computed on first use
   mutable std::shared_ptr<const std::array<double, 4>> rounded_;     // computed on first use
   mutable std::shared_ptr<const std::array<Sign, 3>> sides_;         // computed on first use
+  std::shared_ptr<const Scaled_box> scaled_box_;                     // set by enclose_exact, if out of range
 };
 
 template <>

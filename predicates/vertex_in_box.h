@@ -71,6 +71,22 @@ struct Vertex_in_box_predicate {
     return inside;
   }
 
+  // evaluate<Interval> without exceptions (a vertex on a box bound, as on a lattice, always goes on), and
+  // outside as soon as one axis shows it, whatever the others.
+  static std::optional<bool> interval_stage(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
+    const std::array<Interval, 4> p = v.point_interval();
+    bool certain = true;
+    for (int a = 0; a < 3; ++a) {
+      const std::optional<Sign> below = sign_if_certain(p[a] - Interval(box.lo[a]));
+      const std::optional<Sign> above = sign_if_certain(p[a] - Interval(box.hi[a]));
+      if (below == Sign::NEGATIVE) return false;
+      if (above == Sign::POSITIVE || (above == Sign::ZERO && !closed_above[a])) return false;
+      certain = certain && below && above;
+    }
+    if (!certain) return std::nullopt;
+    return true;
+  }
+
   template <class NT>
   static bool evaluate(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
     Coordinates_against_doubles<NT> p(v);
