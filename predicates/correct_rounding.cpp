@@ -46,7 +46,6 @@ Sign compare_with(const Root_number<Exact>& x, const Exact& m) {
   return compare(x, Root_number<Exact>{m, Exact(0), Exact(0), Exact(1)});
 }
 
-
 // x in `result`, rounded to 256 bits, without cancellation.
 void approximate_into(const Root_number<Exact>& x, Mpfr& result) {
   Mpfr a(x.a), b(x.b), d(x.d), den(x.denominator);

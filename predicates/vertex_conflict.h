@@ -5,8 +5,8 @@
 // |v - p_s|^2 - (r + w_s)^2, which on the cone |U| = X_3 (quadruple_line.h) is the linear form
 // |a_s|^2 - b_s^2 - <(a_s, b_s), X>  with a_s = p_s - p_0, b_s = w_s - w_0: one square root, one squaring.
 //
-// Its interval stage answers nothing rather than throw: in the far field of a lattice, most tests of a
-// vertex 10^320 away go exact, and the exception cost more than the test.
+// Its interval stage answers nothing rather than throw: where tests go exact in bulk (ties, lattices off by
+// an ulp), the exception costs more than the test.
 #pragma once
 
 #include <optional>
