@@ -55,30 +55,30 @@ NT to_number(const Rational& x) {
 
 template <>
 Field_point<Rational> Curve_point::coordinates<Rational>() const {
-  if (exact_) return *exact_;
-  const std::optional<Cut_line<Rational>> line = cut_line(trisector_->geometry<Rational>(), cut_, offset_);
-  if (!line) throw std::logic_error("curve point of a cut parallel to its trisector's plane");
-  const Cut_line<Rational>& l = *line;
-  Field_point<Rational> p;
-  Rational denominator, a_factor, b_factor;  // s = (a_factor + sigma sqrt d) / denominator
-  if (certain_sign(l.A) != Sign::ZERO) {
-    denominator = l.A;
-    a_factor = -l.B;
-    p.discriminant = root_ == Root::SINGLE ? Rational(0) : l.B * l.B - l.A * l.C;
-  } else {
-    denominator = Rational(2) * l.B;
-    a_factor = -l.C;
-    p.discriminant = 0;
-  }
-  const Rational sigma(static_cast<int>(root_));
-  const bool flip = certain_sign(denominator) == Sign::NEGATIVE;
-  for (int j = 0; j < 4; ++j) {
-    Rational a = denominator * l.base[j] + a_factor * l.direction[j], b = sigma * l.direction[j];
-    p.scaled[j] = flip ? Quadratic<Rational>{-a, -b} : Quadratic<Rational>{a, b};
-  }
-  p.denominator = flip ? -denominator : denominator;
-  exact_ = std::make_shared<const Field_point<Rational>>(p);
-  return p;
+  return exact_.get_or_compute([&] {
+    const std::optional<Cut_line<Rational>> line = cut_line(trisector_->geometry<Rational>(), cut_, offset_);
+    if (!line) throw std::logic_error("curve point of a cut parallel to its trisector's plane");
+    const Cut_line<Rational>& l = *line;
+    Field_point<Rational> p;
+    Rational denominator, a_factor, b_factor;  // s = (a_factor + sigma sqrt d) / denominator
+    if (certain_sign(l.A) != Sign::ZERO) {
+      denominator = l.A;
+      a_factor = -l.B;
+      p.discriminant = root_ == Root::SINGLE ? Rational(0) : l.B * l.B - l.A * l.C;
+    } else {
+      denominator = Rational(2) * l.B;
+      a_factor = -l.C;
+      p.discriminant = 0;
+    }
+    const Rational sigma(static_cast<int>(root_));
+    const bool flip = certain_sign(denominator) == Sign::NEGATIVE;
+    for (int j = 0; j < 4; ++j) {
+      Rational a = denominator * l.base[j] + a_factor * l.direction[j], b = sigma * l.direction[j];
+      p.scaled[j] = flip ? Quadratic<Rational>{-a, -b} : Quadratic<Rational>{a, b};
+    }
+    p.denominator = flip ? -denominator : denominator;
+    return p;
+  });
 }
 
 template <>

@@ -5,7 +5,6 @@
 // vertex-free curves and for the crossings that group a face's boundaries.
 #pragma once
 
-#include <memory>
 #include <optional>
 
 #include "predicates/trisector.h"
@@ -29,9 +28,8 @@ class Curve_point {
   Vector4<Rational> cut_;
   Rational offset_;
   Root root_;
-  // The exact coordinates, computed on first use and shared by copies (like Trisector's exact geometry:
-  // one object is not to be used by two threads at once).
-  mutable std::shared_ptr<const Field_point<Rational>> exact_;
+  // The exact coordinates, computed on first use, by any thread (computed_once.h).
+  Computed_once<Field_point<Rational>> exact_;
 };
 
 // The points where the cut meets the cone within L (on either sheet, valid or not): none, one (SINGLE),

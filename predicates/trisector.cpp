@@ -193,8 +193,7 @@ const Trisector_geometry<Interval>& Trisector::geometry<Interval>() const {
 
 template <>
 const Trisector_geometry<Rational>& Trisector::geometry<Rational>() const {
-  if (!rational_) rational_ = std::make_shared<const Trisector_geometry<Rational>>(trisector_geometry<Rational>(sites_));
-  return *rational_;
+  return rational_.get_or_compute([&] { return trisector_geometry<Rational>(sites_); });
 }
 
 template <>

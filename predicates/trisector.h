@@ -14,10 +14,10 @@
 #pragma once
 
 #include <array>
-#include <memory>
 #include <optional>
 #include <type_traits>
 
+#include "predicates/computed_once.h"
 #include "predicates/quadratic.h"
 #include "predicates/quadruple_line.h"
 #include "predicates/rational.h"
@@ -121,7 +121,7 @@ class Trisector {
   std::array<Site_index, 3> indices_;
   std::array<Site, 3> sites_;
   std::optional<Trisector_geometry<Interval>> interval_;                  // empty: undecided in intervals
-  mutable std::shared_ptr<const Trisector_geometry<Rational>> rational_;  // computed on first use
+  Computed_once<Trisector_geometry<Rational>> rational_;                 // computed on first use, by any thread
 };
 
 template <>

@@ -76,7 +76,7 @@ constexpr long kPlainRange = 500;
 
 }  // namespace
 
-Vertex::Vertex(const Quadruple& quadruple, Root root, std::shared_ptr<const Vertex_coordinates<Exact>> exact)
+Vertex::Vertex(const Quadruple& quadruple, Root root, Vertex_coordinates<Exact> exact)
     : quadruple_(quadruple),
       root_(root),
       exact_(std::move(exact)) {
@@ -84,29 +84,29 @@ Vertex::Vertex(const Quadruple& quadruple, Root root, std::shared_ptr<const Vert
 }
 
 void Vertex::enclose_exact() {
-  box_.scaled = enclose(*exact_);
+  const Vertex_coordinates<Exact>& exact = *exact_.get();
+  box_.scaled = enclose(exact);
   double magnitude = 0;
   for (const Interval& x : box_.scaled) magnitude = std::max({magnitude, -x.inf(), x.sup()});
   if (magnitude >= std::ldexp(1.0, -kPlainRange) && magnitude <= std::ldexp(1.0, kPlainRange)) return;
   std::optional<long> largest;
-  for (const Quadratic<Exact>& x : exact_->scaled)
-    if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact_->discriminant, exact_->denominator}))
+  for (const Quadratic<Exact>& x : exact.scaled)
+    if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact.discriminant, exact.denominator}))
       largest = std::max(largest.value_or(*e), *e);
   if (largest && (*largest > kPlainRange || *largest < -kPlainRange))
-    scaled_box_ = std::make_shared<const Scaled_box>(Scaled_box{*largest, enclose(*exact_, *largest)});
+    scaled_box_ = std::make_shared<const Scaled_box>(Scaled_box{*largest, enclose(exact, *largest)});
 }
 
 template <>
 const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const {
-  if (!exact_) {
+  return exact_.get_or_compute([&] {
     const Quadruple_line<Exact> line = quadruple_line<Exact>(quadruple_.sites);
     if (line.pivot >= 0) {
       for (const Line_root<Exact>& r : line_roots(line).roots)
-        if (r.root == root_) exact_ = std::make_shared<const Vertex_coordinates<Exact>>(coordinates_on_line(line, r.lambda));
+        if (r.root == root_) return coordinates_on_line(line, r.lambda);
     }
-    if (!exact_) throw std::logic_error("vertex root vanished in exact recomputation");
-  }
-  return *exact_;
+    throw std::logic_error("vertex root vanished in exact recomputation");
+  });
 }
 
 std::array<Interval, 4> Vertex::point_interval() const {
@@ -144,7 +144,7 @@ Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with
 }
 
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X) {
-  return Vertex(q, root, std::make_shared<const Vertex_coordinates<Exact>>(std::move(X)));
+  return Vertex(q, root, std::move(X));
 }
 
 Quadruple make_quadruple(std::array<Site_index, 4> indices, const std::vector<Site>& sites) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <type_traits>
 
+#include "predicates/computed_once.h"
 #include "predicates/double_with_error.h"
 #include "predicates/quadratic.h"
 #include "predicates/quadruple_line.h"
@@ -63,7 +64,7 @@ class Vertex {
  public:
   Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box)
       : quadruple_(quadruple), root_(root), box_{box} {}
-  Vertex(const Quadruple& quadruple, Root root, std::shared_ptr<const Vertex_coordinates<Exact>> exact);
+  Vertex(const Quadruple& quadruple, Root root, Vertex_coordinates<Exact> exact);
 
   const Quadruple& quadruple() const { return quadruple_; }
   const std::array<Site_index, 4>& sites() const { return quadruple_.indices; }
@@ -97,9 +98,10 @@ class Vertex {
   Quadruple quadruple_;
   Root root_;
   Vertex_coordinates<Interval> box_;  // holds X
-  mutable std::shared_ptr<const Vertex_coordinates<Exact>> exact_;  // computed on first use
-  mutable std::shared_ptr<const std::array<double, 4>> rounded_;     // computed on first use
-  mutable std::shared_ptr<const std::array<Sign, 3>> sides_;         // computed on first use
+  // Computed on first use, by any thread (computed_once.h).
+  Computed_once<Vertex_coordinates<Exact>> exact_;
+  Computed_once<std::array<double, 4>> rounded_;
+  Computed_once<std::array<Sign, 3>> sides_;
   std::shared_ptr<const Scaled_box> scaled_box_;                     // set by enclose_exact, if out of range
 };
 

@@ -59,21 +59,19 @@ std::array<std::optional<double>, 4> certified_roundings(const Vertex& v) {
 }
 
 const std::array<double, 4>& Vertex::rounded() const {
-  if (!rounded_) rounded_ = std::make_shared<const std::array<double, 4>>(rounded_coordinates(*this));
-  return *rounded_;
+  return rounded_.get_or_compute([&] { return rounded_coordinates(*this); });
 }
 
 const std::array<Sign, 3>& Vertex::rounding_sides() const {
-  if (!sides_) {
+  return sides_.get_or_compute([&] {
     const std::array<double, 4>& r = rounded();
     const std::array<Root_number<Exact>, 4> p = exact_point(*this);
     std::array<Sign, 3> sides;
     // A coordinate beyond the double range rounds to an infinity, which no box bound equals: never asked.
     for (int a = 0; a < 3; ++a)
       sides[a] = std::isfinite(r[a]) ? compare(p[a], Root_number<Exact>{Exact(r[a]), Exact(0), Exact(0), Exact(1)}) : Sign::ZERO;
-    sides_ = std::make_shared<const std::array<Sign, 3>>(sides);
-  }
-  return *sides_;
+    return sides;
+  });
 }
 
 std::array<double, 4> rounded_coordinates(const Vertex& v) {
