@@ -12,7 +12,7 @@ namespace apollonius {
 
 // Every hidden site, ascending. hidden_by is the first identical earlier site for a duplicate, otherwise
 // the smallest index of a site that hides it. Kernel: kernels.h (the certified one, unless for the
-// floating path). Checks cancellation (cancellation.h) once per site of the sweep.
+// floating path). Checks cancellation (cancellation.h) every 1,024 sites.
 template <class Kernel>
 std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites,
                                                const Cancellation* cancellation = nullptr);
