@@ -143,6 +143,22 @@ Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with
                           enclosing_interval(X.scaled[3])});
 }
 
+// The plain box (infinite, or rounded outward into the subnormals, beyond the double range), and the
+// scaled box at the largest coordinate's exponent where that lies beyond 2^+-500, as for exact coordinates.
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Wide_interval> X) {
+  std::array<Interval, 4> box;
+  std::optional<long> largest;
+  for (int j = 0; j < 4; ++j) {
+    box[j] = X.scaled[j].to_interval();
+    const Interval& m = X.scaled[j].mantissa();
+    if (m.inf() != 0 || m.sup() != 0) largest = std::max(largest.value_or(X.scaled[j].exponent()), X.scaled[j].exponent());
+  }
+  if (!largest || (*largest <= kPlainRange && *largest >= -kPlainRange)) return Vertex(q, root, box);
+  Scaled_box scaled{*largest, {}};
+  for (int j = 0; j < 4; ++j) scaled.scaled[j] = X.scaled[j].scaled_down(*largest);
+  return Vertex(q, root, box, scaled);
+}
+
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X) {
   return Vertex(q, root, std::move(X));
 }

@@ -65,6 +65,9 @@ class Vertex {
   Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box)
       : quadruple_(quadruple), root_(root), box_{box} {}
   Vertex(const Quadruple& quadruple, Root root, Vertex_coordinates<Exact> exact);
+  // From a filter's enclosure of X beyond the double range: `box` is infinite there, `scaled` holds X.
+  Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box, Scaled_box scaled)
+      : quadruple_(quadruple), root_(root), box_{box}, scaled_box_(std::make_shared<const Scaled_box>(std::move(scaled))) {}
 
   const Quadruple& quadruple() const { return quadruple_; }
   const std::array<Site_index, 4>& sites() const { return quadruple_.indices; }
@@ -87,8 +90,8 @@ class Vertex {
   const std::array<Sign, 3>& rounding_sides() const;
   const std::array<Sign, 3>* rounding_sides_if_computed() const { return sides_.get(); }
 
-  // For a vertex made from its exact coordinates (vertices_of's exact stage) whose X lies beyond
-  // [2^-500, 2^500]; else null.
+  // For a vertex made from its exact coordinates (vertices_of's exact stage) or from wide intervals whose
+  // X lies beyond [2^-500, 2^500]; else null.
   const Scaled_box* scaled_box() const { return scaled_box_.get(); }
 
  private:

@@ -13,6 +13,7 @@
 #include "predicates/double_with_magnitude.h"
 #include "predicates/filtered_predicate.h"
 #include "predicates/line_roots.h"
+#include "predicates/wide_interval.h"
 
 namespace apollonius {
 
@@ -40,6 +41,7 @@ bool is_valid_root(const Vertex_coordinates<NT>& X, const Quadruple& q) {
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<double> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Double_with_error> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X);
+Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Wide_interval> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X);
 
 struct Vertices_of_predicate {
@@ -51,6 +53,21 @@ struct Vertices_of_predicate {
     try {
       const auto bounded = [](const Double_with_magnitude& x) { return with_error(x); };
       return vertices_on_line(converted_line<Double_with_error>(quadruple_line<Double_with_magnitude>(q.sites), bounded), q);
+    } catch (const Uncertain_sign&) {
+      return std::nullopt;
+    }
+  }
+
+  // Intervals, then wide intervals (wide_interval.h): sites spread over many binades (5e-324 to 1e266)
+  // take the line's polynomials, of degree up to 14, out of the double range, where plain intervals
+  // overflow or underflow and only the exact stage, with thousands of bits, decided.
+  static std::optional<Quadruple_vertices> interval_stage(const Quadruple& q) {
+    try {
+      return evaluate<Interval>(q);
+    } catch (const Uncertain_sign&) {
+    }
+    try {
+      return evaluate<Wide_interval>(q);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
