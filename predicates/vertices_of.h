@@ -66,11 +66,24 @@ struct Vertices_of_predicate {
       return evaluate<Interval>(q);
     } catch (const Uncertain_sign&) {
     }
+    if (!may_leave_double_range(q)) return std::nullopt;
     try {
       return evaluate<Wide_interval>(q);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
+  }
+
+  // Whether a relative coordinate (a_m, b_m: quadruple_line.h) lies beyond 2^64, or every nonzero one
+  // below 2^-64, so that the line's polynomials may overflow or underflow as a whole. Elsewhere plain
+  // intervals fail on nearly degenerate quadruples (sites one ulp off a lattice), where wide ones fail too.
+  static bool may_leave_double_range(const Quadruple& q) {
+    double largest = 0;
+    for (int m = 1; m < 4; ++m)
+      for (const double d : {q.sites[m].x - q.sites[0].x, q.sites[m].y - q.sites[0].y, q.sites[m].z - q.sites[0].z,
+                             q.sites[m].w - q.sites[0].w})
+        largest = std::max(largest, std::fabs(d));  // an overflowing difference is infinite, hence large
+    return !(largest <= 0x1p64) || largest < 0x1p-64;
   }
 
   template <class NT>

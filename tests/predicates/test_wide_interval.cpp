@@ -114,7 +114,7 @@ TEST_CASE("wide intervals: quotients, square roots and signs hold the exact valu
 TEST_CASE("vertices_of's wide stage agrees with the exact stage on sites from 5e-324 to 1e300") {
   std::mt19937_64 random(20261129);
   std::uniform_int_distribution<int> exponent(-1074, 1000), small(-4, 4);
-  int decided = 0, undecided = 0, plain_failed = 0, vertices = 0, scaled = 0;
+  int decided = 0, undecided = 0, plain_failed = 0, vertices = 0, scaled = 0, gate_open = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     CAPTURE(trial);
     std::array<Site, 4> s;
@@ -124,6 +124,7 @@ TEST_CASE("vertices_of's wide stage agrees with the exact stage on sites from 5e
       site = {scale * small(random), scale * small(random), scale * small(random), scale * std::abs(small(random)) / 4};
     }
     const Quadruple q = make_quadruple({0, 1, 2, 3}, {s.begin(), s.end()});
+    gate_open += Vertices_of_predicate::may_leave_double_range(q);
     std::optional<Quadruple_vertices> wide;
     {
       Rounding_guard guard;
@@ -167,8 +168,22 @@ TEST_CASE("vertices_of's wide stage agrees with the exact stage on sites from 5e
   }
   MESSAGE("wide stage: " << decided << " decided, " << undecided << " not; plain intervals failed on " << plain_failed
                          << "; " << vertices << " vertices, " << scaled << " with a scaled box");
+  CHECK(gate_open > 3800);  // vertices_of tries the wide stage on these
   CHECK(plain_failed > 2000);
   CHECK(decided > 1500);  // most of the rest tie exactly (a coordinate 0 in one site in nine)
   CHECK(vertices > 1000);
   CHECK(scaled > 100);
+}
+
+TEST_CASE("the wide stage is tried only where the relative coordinates may leave the double range") {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  // One ulp off a lattice: nearly degenerate, of ordinary size; wide intervals would fail as plain ones do.
+  const std::vector<Site> nudged = {{0, 0, tiny, 1}, {4, 0, 0, 1}, {0, std::nextafter(4.0, 5.0), tiny, 1.5}, {4, 4, 0, 1}};
+  CHECK_FALSE(Vertices_of_predicate::may_leave_double_range(make_quadruple({0, 1, 2, 3}, nudged)));
+  const std::vector<Site> spread = {{0, 0, 0, 1}, {1e266, 0, 0, 1}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+  CHECK(Vertices_of_predicate::may_leave_double_range(make_quadruple({0, 1, 2, 3}, spread)));
+  const std::vector<Site> small = {{0, 0, 0, 0}, {1e-300, 0, 0, 0}, {0, 1e-300, 0, 0}, {0, 0, 1e-300, 0}};
+  CHECK(Vertices_of_predicate::may_leave_double_range(make_quadruple({0, 1, 2, 3}, small)));
+  const std::vector<Site> overflowing = {{-1.7e308, 0, 0, 0}, {1.7e308, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+  CHECK(Vertices_of_predicate::may_leave_double_range(make_quadruple({0, 1, 2, 3}, overflowing)));
 }
