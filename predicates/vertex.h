@@ -105,7 +105,7 @@ class Vertex {
   Computed_once<Vertex_coordinates<Exact>> exact_;
   Computed_once<std::array<double, 4>> rounded_;
   Computed_once<std::array<Sign, 3>> sides_;
-  std::shared_ptr<const Scaled_box> scaled_box_;                     // set by enclose_exact, if out of range
+  std::shared_ptr<const Scaled_box> scaled_box_;  // set when made (exact or wide), if X is out of range
 };
 
 template <>

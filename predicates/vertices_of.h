@@ -74,8 +74,8 @@ struct Vertices_of_predicate {
     }
   }
 
-  // Whether a relative coordinate (a_m, b_m: quadruple_line.h) lies beyond 2^64, or every nonzero one
-  // below 2^-64, so that the line's polynomials may overflow or underflow as a whole. Elsewhere plain
+  // Whether a relative coordinate (a_m, b_m: quadruple_line.h) lies beyond 2^64, or every one below
+  // 2^-64, so that the line's polynomials may overflow or underflow as a whole. Elsewhere plain
   // intervals fail on nearly degenerate quadruples (sites one ulp off a lattice), where wide ones fail too.
   static bool may_leave_double_range(const Quadruple& q) {
     double largest = 0;
