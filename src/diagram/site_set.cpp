@@ -26,8 +26,9 @@ class Hider_tree {
     build(0, sites.size());
   }
 
-  // Sets `hiders` to every site j != i that can hide site i, and some that cannot.
-  void possible_hiders(Site_index i, std::vector<Site_index>& hiders) const {
+  // Sets `hiders` to every site j != i that can hide site i, and some that cannot. Not const: it reuses
+  // the tree's stack.
+  void possible_hiders(Site_index i, std::vector<Site_index>& hiders) {
     hiders.clear();
     const Site& s = sites_[i];
     Rounding_guard guard;
@@ -42,12 +43,11 @@ class Hider_tree {
       }
       return !(distance_squared.inf() > (weight_gap * weight_gap).sup());
     };
-    std::vector<std::size_t>& stack = stack_;
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      const std::size_t k = stack.back();
-      stack.pop_back();
+    stack_.assign(1, 0);
+    while (!stack_.empty()) {
+      const std::size_t k = stack_.back();
+      stack_.pop_back();
+      const Node& node = nodes_[k];
       if (!may_hide(node.lo, node.hi, node.heaviest)) continue;
       if (node.right == 0) {
         for (std::size_t m = node.begin; m < node.end; ++m) {
@@ -56,8 +56,8 @@ class Hider_tree {
           if (j != i && may_hide(c, c, sites_[j].w)) hiders.push_back(j);
         }
       } else {
-        stack.push_back(node.right);
-        stack.push_back(k + 1);
+        stack_.push_back(node.right);
+        stack_.push_back(k + 1);
       }
     }
   }
@@ -104,7 +104,7 @@ class Hider_tree {
   const std::vector<Site>& sites_;
   std::vector<Site_index> order_;
   std::vector<Node> nodes_;
-  mutable std::vector<std::size_t> stack_;  // scratch of possible_hiders: one searching thread at a time
+  std::vector<std::size_t> stack_;  // scratch of possible_hiders
 };
 
 }  // namespace
@@ -119,7 +119,7 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites, c
   const std::size_t n = sites.size();
   std::vector<Hidden_site> hidden;
   if (n < 2) return hidden;
-  const Hider_tree tree(sites);
+  Hider_tree tree(sites);
   std::vector<Site_index> hiders;
   for (Site_index i = 0; i < n; ++i) {
     if ((i & 1023) == 0) throw_if_cancelled(cancellation);
