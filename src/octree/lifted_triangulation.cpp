@@ -2,6 +2,7 @@
 
 #include <CGAL/Epeck_d.h>
 #include <CGAL/Epick_d.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Regular_triangulation.h>
 
 #include <algorithm>
@@ -12,6 +13,21 @@
 
 namespace apollonius {
 namespace {
+
+// Epick_d<4> with its power test, a 5 x 5 determinant and so division-free, decided on CGAL::Mpzf where
+// the interval filter fails, as Epick_d already does its orientation; Epick_d falls back to mpq there,
+// whose every operation reduces a fraction (the lifts of nearly cospherical sites fail the filter often).
+template <class Dim>
+using Lift_kernel_fields = CGAL::Cartesian_filter_K<CGAL::Cartesian_base_d<double, Dim>,
+                                                    CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, Dim>,
+                                                    CGAL::Cartesian_base_d<CGAL::internal::Exact_field_selector<double>::Type, Dim>>;
+using Division_free_lift_predicates =
+    CGAL::typeset<CGAL::Orientation_of_points_tag, CGAL::Side_of_oriented_sphere_tag, CGAL::Power_side_of_power_sphere_tag>;
+struct Lift_kernel_rings
+    : CGAL::Cartesian_filter_K<Lift_kernel_fields<CGAL::Dimension_tag<4>>,
+                               CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, CGAL::Dimension_tag<4>>,
+                               CGAL::Cartesian_base_d<CGAL::Mpzf, CGAL::Dimension_tag<4>>, Division_free_lift_predicates> {};
+struct Double_lift_kernel : CGAL::Kernel_d_interface<CGAL::Cartesian_wrap<Lift_kernel_rings, Double_lift_kernel>> {};
 
 struct Lifted_site {
   std::int64_t index = -1;  // the site's index, -1 until set
@@ -80,7 +96,7 @@ std::vector<std::array<Site_index, 4>> lifted_triangulation_quadruples(const std
     // (A square below 2^-969 could hide its rounding error below the subnormals.)
     return w == 0 || (std::fma(w, w, -(w * w)) == 0 && std::abs(w * w) >= 0x1p-969 && std::isfinite(2 * w * w));
   });
-  if (exact_squares) return quadruples_with<CGAL::Epick_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
+  if (exact_squares) return quadruples_with<Double_lift_kernel>(sites, subset, cancellation);
   return quadruples_with<CGAL::Epeck_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
 }
 
