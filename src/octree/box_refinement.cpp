@@ -73,8 +73,6 @@ constexpr int kStagnationToSettleHuge = 1;
 constexpr std::size_t kStagnantCandidates = 12;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 2200;
-// A root number that no root has (keep_roots_in_box skips none).
-constexpr std::size_t kNoRoot = static_cast<std::size_t>(-1);
 
 // The children of a box: its axes at least half as long as the longest are halved. None if some such axis
 // has no double strictly inside it.
@@ -107,6 +105,16 @@ Children split(const Axis_box& box) {
     if (valid) children.box[children.count++] = child;
   }
   return children;
+}
+
+// Whether the vertex is known to lie exactly on a bound of the box (on a plane x_a = bound).
+bool known_on_bound(const Vertex& v, const Axis_box& box) {
+  const std::array<double, 4>* rounded = v.rounded_if_computed();
+  const std::array<Sign, 3>* sides = v.rounding_sides_if_computed();
+  if (rounded == nullptr || sides == nullptr) return false;
+  for (int a = 0; a < 3; ++a)
+    if (((*rounded)[a] == box.lo[a] || (*rounded)[a] == box.hi[a]) && (*sides)[a] == Sign::ZERO) return true;
+  return false;
 }
 
 // Whether two vertices certainly differ: their interval enclosures are disjoint.
@@ -279,43 +287,38 @@ bool Box_refinement<Kernel>::huge_against_candidates(const Axis_box& box, std::s
   return (CGAL::square(Interval(scaled_shortest)) - scaled_spread_squared).inf() > 0;
 }
 
+// A point equidistant from five or more candidates is a root of each of their C(t, 4) quadruples (70 for a
+// lattice point). Once one of them has decided it here (located, or on the boundary and not), each later
+// quadruple among those candidates has it as a root whenever its roots are discrete, so root_equal_to names
+// that root (by intervals unless the two roots nearly meet) and only the other one is decided. This skips
+// only what append_unique would discard or in_box reject again: the same vertices, in the same order.
 template <class Kernel>
 void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
   const std::size_t k = stack_.size() - first, leaf_start = out.size();
   ++counts_.leaves;
   counts_.leaf_candidates += k;
-  const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
   // Sorted once, so that every quadruple below comes out sorted.
   std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
   const Site_index* leaf = stack_.data() + first;
+  decided_here_.clear();
+  const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
+    unsigned skipped = 0;
+    for (const Found_vertex& decided : decided_here_)
+      if (std::includes(decided.first.begin(), decided.first.end(), quadruple.begin(), quadruple.end()))
+        skipped |= 1u << root_equal_to<Kernel>(decided.second, roots);
+    keep_roots_in_box(quadruple, roots, skipped, box, leaf, k, leaf_start, out, true);
+  };
   for (std::size_t a = 0; a < k; ++a)
     for (std::size_t b = a + 1; b < k; ++b)
       for (std::size_t c = b + 1; c < k; ++c)
         for (std::size_t d = c + 1; d < k; ++d) {
           const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
-          const auto keep_located = [&](const Quadruple_vertices& vertices) {
-            for (const Vertex& v : vertices.vertices) {
-              if (!Kernel::in_box(v, box, closed_above)) continue;
-              // The candidates include every owner of the vertex: its tie set is among them.
-              tie_.assign(quadruple.begin(), quadruple.end());
-              bool closer = false;
-              for (std::size_t o = 0; o < k && !closer; ++o) {
-                if (o == a || o == b || o == c || o == d) continue;
-                const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
-                closer = sign == Sign::NEGATIVE;
-                if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
-              }
-              if (closer) continue;
-              std::sort(tie_.begin(), tie_.end());
-              append_unique<Kernel>(out, leaf_start, {tie_, v});
-            }
-          };
           // A leaf of many candidates (an exact tie of many sites, at the double resolution) is streamed:
           // caching its quadruples would hold them all.
           if (k > kStagnantCandidates)
-            keep_located(Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
+            decide(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
           else
-            keep_located(cache_.vertices_of_quadruple(quadruple, sites_));
+            decide(quadruple, cache_.vertices_of_quadruple(quadruple, sites_));
         }
 }
 
@@ -362,23 +365,29 @@ typename Box_refinement<Kernel>::Tie Box_refinement<Kernel>::classify_tie(std::s
 
 template <class Kernel>
 void Box_refinement<Kernel>::keep_roots_in_box(const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots,
-                                               std::size_t skip, const Axis_box& box, const Site_index* leaf,
-                                               std::size_t k, std::size_t leaf_start, std::vector<Found_vertex>& out) {
+                                               unsigned skipped, const Axis_box& box, const Site_index* leaf,
+                                               std::size_t k, std::size_t leaf_start, std::vector<Found_vertex>& out,
+                                               bool remember) {
   const std::array<bool, 3> closed_above = {box.hi[0] == root_.hi[0], box.hi[1] == root_.hi[1], box.hi[2] == root_.hi[2]};
   for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
     const Vertex& v = roots.vertices[r];
-    if (r == skip || !Kernel::in_box(v, box, closed_above)) continue;
+    if (skipped >> r & 1) continue;
+    const bool located = Kernel::in_box(v, box, closed_above);
+    // A point exactly on the box's boundary (as lattice points are) was located exactly: worth its
+    // equidistant set, so that the other quadruples of it here skip it rather than locate it again.
+    if (!located && !(remember && known_on_bound(v, box))) continue;
     tie_.assign(quadruple.begin(), quadruple.end());
     bool closer = false;
-    for (std::size_t o = 0; o < k && !closer; ++o) {
+    for (std::size_t o = 0; o < k && !(closer && located); ++o) {
       if (std::find(quadruple.begin(), quadruple.end(), leaf[o]) != quadruple.end()) continue;
       const Sign sign = Kernel::conflict(v, sites_[leaf[o]]);
-      closer = sign == Sign::NEGATIVE;
+      closer = closer || sign == Sign::NEGATIVE;
       if (sign == Sign::ZERO) tie_.push_back(leaf[o]);
     }
-    if (closer) continue;
     std::sort(tie_.begin(), tie_.end());
-    append_unique<Kernel>(out, leaf_start, {tie_, v});
+    const bool complete = !(closer && located);  // every candidate tested: tie_ is the equidistant set
+    if (remember && complete && tie_.size() > 4) decided_here_.push_back({tie_, v});
+    if (located && !closer) append_unique<Kernel>(out, leaf_start, {tie_, v});
   }
 }
 
@@ -391,8 +400,8 @@ void Box_refinement<Kernel>::decide_line_leaf(const Axis_box& box, std::size_t f
   ++counts_.leaves;
   counts_.leaf_candidates += k;
   const std::array<Site_index, 4> basis = line_basis_;
-  keep_roots_in_box(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)), kNoRoot, box,
-                    stack_.data() + first, k, leaf_start, out);
+  keep_roots_in_box(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)), 0, box,
+                    stack_.data() + first, k, leaf_start, out, false);
 }
 
 // Every candidate ties at v = tie_point_, so every quadruple of them with a discrete set of roots has v as
@@ -418,7 +427,7 @@ void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::siz
   if (Kernel::in_box(tie_point, box, closed_above)) append_unique<Kernel>(out, leaf_start, {std::vector<Site_index>(leaf, leaf + k), tie_point});
 
   const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
-    keep_roots_in_box(quadruple, roots, root_equal_to<Kernel>(tie_point, roots), box, leaf, k, leaf_start, out);
+    keep_roots_in_box(quadruple, roots, 1u << root_equal_to<Kernel>(tie_point, roots), box, leaf, k, leaf_start, out, false);
   };
   if (dimension == 3) {
     decide(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)));

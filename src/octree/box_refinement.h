@@ -71,11 +71,13 @@ class Box_refinement {
   enum class Tie { none, vertex_free, on_one_line, at_point };
   Tie classify_tie(std::size_t first, bool at_point_too);
   void decide_line_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
-  // Appends each root of `quadruple` but root number `skip` that lies in the box and to which no site of
-  // leaf[0, k) is closer, with its tie set among them.
-  void keep_roots_in_box(const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots, std::size_t skip,
+  // Appends each root of `quadruple` not in the bit set `skipped` that lies in the box and to which no site
+  // of leaf[0, k) is closer, with its tie set among them. If `remember`, each such root, or root located
+  // on the box's boundary outside it, that is equidistant from five or more of leaf[0, k) goes into
+  // decided_here_ with them.
+  void keep_roots_in_box(const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots, unsigned skipped,
                          const Axis_box& box, const Site_index* leaf, std::size_t k, std::size_t leaf_start,
-                         std::vector<Found_vertex>& out);
+                         std::vector<Found_vertex>& out, bool remember);
   void decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
 
   const std::vector<Site>& sites_;
@@ -94,6 +96,9 @@ class Box_refinement {
   std::array<Site_index, 4> line_basis_{};
   Tie_point_star<Kernel> star_;
   std::vector<std::array<Site_index, 4>> near_quadruples_;
+  // The points decide_leaf has decided in its leaf that are equidistant from five or more of its candidates,
+  // with those candidates (ascending): each is a root of every quadruple among them.
+  std::vector<Found_vertex> decided_here_;
 };
 
 }  // namespace apollonius
