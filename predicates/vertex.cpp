@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "predicates/correct_rounding.h"
+#include "predicates/exact_quadruple_line.h"
 #include "predicates/line_roots.h"
 #include "predicates/rounding_guard.h"
 #include "predicates/vertices_of.h"
@@ -100,7 +101,7 @@ void Vertex::enclose_exact() {
 template <>
 const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const {
   return exact_.get_or_compute([&] {
-    const Quadruple_line<Exact> line = quadruple_line<Exact>(quadruple_.sites);
+    const Quadruple_line<Exact> line = exact_quadruple_line(quadruple_.sites);
     if (line.pivot >= 0) {
       for (const Line_root<Exact>& r : line_roots(line).roots)
         if (r.root == root_) return coordinates_on_line(line, r.lambda);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "predicates/double_with_magnitude.h"
+#include "predicates/exact_quadruple_line.h"
 #include "predicates/filtered_predicate.h"
 #include "predicates/line_roots.h"
 #include "predicates/wide_interval.h"
@@ -88,7 +89,8 @@ struct Vertices_of_predicate {
 
   template <class NT>
   static Quadruple_vertices evaluate(const Quadruple& q) {
-    return vertices_on_line(quadruple_line<NT>(q.sites), q);
+    if constexpr (std::is_same_v<NT, Exact>) return vertices_on_line(exact_quadruple_line(q.sites), q);
+    else return vertices_on_line(quadruple_line<NT>(q.sites), q);
   }
 
   template <class NT>
