@@ -1,5 +1,6 @@
 #include "predicates/exact_quadruple_line.h"
 
+#include <cmath>
 #include <optional>
 
 #include "predicates/rounding_guard.h"
@@ -16,12 +17,14 @@ std::optional<Quadruple_line<Exact>> line_from_point_minors(const std::array<Sit
   } catch (const Uncertain_sign&) {
     return std::nullopt;  // a minor's interval straddles 0: not a point
   }
+  // [x, x] with x finite (an overflow rounds outward to [DBL_MAX, inf], never to a point at infinity).
+  const auto point = [](const Interval& x) { return x.inf() == x.sup() && std::isfinite(x.inf()); };
   Quadruple_line<Exact> exact;
   exact.pivot = line.pivot;
   for (int j = 0; j < 4; ++j) {
     // Q is only formed past the pivot (quadruple_line.h); its intervals are then checked too.
-    if (line.n[j].inf() != line.n[j].sup()) return std::nullopt;
-    if (line.pivot >= 0 && line.Q[j].inf() != line.Q[j].sup()) return std::nullopt;
+    if (!point(line.n[j])) return std::nullopt;
+    if (line.pivot >= 0 && !point(line.Q[j])) return std::nullopt;
     exact.n[j] = Exact(line.n[j].inf());
     if (line.pivot >= 0) exact.Q[j] = Exact(line.Q[j].inf());
   }
