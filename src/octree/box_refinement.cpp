@@ -292,6 +292,8 @@ bool Box_refinement<Kernel>::huge_against_candidates(const Axis_box& box, std::s
 // quadruple among those candidates has it as a root whenever its roots are discrete, so root_equal_to names
 // that root (by intervals unless the two roots nearly meet) and only the other one is decided. This skips
 // only what append_unique would discard or in_box reject again: the same vertices, in the same order.
+// Cost: a quadruple with a remembered point as a root lies in that point's equidistant set, so each point
+// is remembered once, and each quadruple scans the leaf's distinct remembered points.
 template <class Kernel>
 void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
   const std::size_t k = stack_.size() - first, leaf_start = out.size();
