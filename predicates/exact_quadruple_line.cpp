@@ -36,12 +36,7 @@ std::optional<Quadruple_line<Exact>> line_from_point_minors(const std::array<Sit
 Quadruple_line<Exact> exact_quadruple_line(const std::array<Site, 4>& sites) {
   std::optional<Quadruple_line<Exact>> line = line_from_point_minors(sites);
   if (!line) return quadruple_line<Exact>(sites);
-  if (line->pivot >= 0) {
-    line->A = lorentz_product(line->n, line->n);
-    line->B = lorentz_product(line->Q, line->n);
-    line->C = lorentz_product(line->Q, line->Q);
-    line->discriminant = line->B * line->B - line->A * line->C;
-  }
+  if (line->pivot >= 0) set_cone_terms(*line);
   return *line;
 }
 

@@ -80,6 +80,15 @@ class Minors_of_extended_matrix {
   std::array<std::array<NT, 5>, 5> lower_;  // lower_[p][q], p < q
 };
 
+// A, B, C and the discriminant from n and Q (precondition: pivot >= 0).
+template <class NT>
+void set_cone_terms(Quadruple_line<NT>& line) {
+  line.A = lorentz_product(line.n, line.n);
+  line.B = lorentz_product(line.Q, line.n);
+  line.C = lorentz_product(line.Q, line.Q);
+  line.discriminant = line.B * line.B - line.A * line.C;
+}
+
 template <class NT>
 Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
   std::array<std::array<NT, 5>, 3> rows;
@@ -120,10 +129,7 @@ Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
     line.Q[j] = ((k + t) % 2 == 0) ? determinant : -determinant;
   }
   line.Q[k] = NT(0);
-  line.A = lorentz_product(line.n, line.n);
-  line.B = lorentz_product(line.Q, line.n);
-  line.C = lorentz_product(line.Q, line.Q);
-  line.discriminant = line.B * line.B - line.A * line.C;
+  set_cone_terms(line);
   return line;
 }
 

@@ -17,16 +17,15 @@ namespace {
 // Epick_d<4> with its power test, a 5 x 5 determinant and so division-free, decided on CGAL::Mpzf where
 // the interval filter fails, as Epick_d already does its orientation; Epick_d falls back to mpq there,
 // whose every operation reduces a fraction (the lifts of nearly cospherical sites fail the filter often).
-template <class Dim>
-using Lift_kernel_fields = CGAL::Cartesian_filter_K<CGAL::Cartesian_base_d<double, Dim>,
-                                                    CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, Dim>,
-                                                    CGAL::Cartesian_base_d<CGAL::internal::Exact_field_selector<double>::Type, Dim>>;
+using Dimension_4 = CGAL::Dimension_tag<4>;
+using Lift_kernel_fields = CGAL::Cartesian_filter_K<CGAL::Cartesian_base_d<double, Dimension_4>,
+                                                    CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, Dimension_4>,
+                                                    CGAL::Cartesian_base_d<CGAL::internal::Exact_field_selector<double>::Type, Dimension_4>>;
 using Division_free_lift_predicates =
     CGAL::typeset<CGAL::Orientation_of_points_tag, CGAL::Side_of_oriented_sphere_tag, CGAL::Power_side_of_power_sphere_tag>;
 struct Lift_kernel_rings
-    : CGAL::Cartesian_filter_K<Lift_kernel_fields<CGAL::Dimension_tag<4>>,
-                               CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, CGAL::Dimension_tag<4>>,
-                               CGAL::Cartesian_base_d<CGAL::Mpzf, CGAL::Dimension_tag<4>>, Division_free_lift_predicates> {};
+    : CGAL::Cartesian_filter_K<Lift_kernel_fields, CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, Dimension_4>,
+                               CGAL::Cartesian_base_d<CGAL::Mpzf, Dimension_4>, Division_free_lift_predicates> {};
 struct Double_lift_kernel : CGAL::Kernel_d_interface<CGAL::Cartesian_wrap<Lift_kernel_rings, Double_lift_kernel>> {};
 
 struct Lifted_site {
