@@ -1,11 +1,13 @@
 #include "measure/cell_measures.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "measure/box_cell_regions.h"
 #include "measure/cell_cubature.h"
 #include "measure/cut_candidates.h"
 
@@ -33,6 +35,12 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
     tbb::parallel_for(std::size_t{0}, sites.size(), [&](std::size_t i) {
       throw_if_cancelled(options.cancellation);  // a throw cancels the parallel loop
       if (!active[i]) return;
+      if (options.exit_regions)
+        if (std::optional<Cell_measure> m = integrate_box_cell(sites, active, static_cast<Site_index>(i), neighbours[i],
+                                                               domain, options.relative_tolerance)) {
+          measures[i] = std::move(*m);
+          return;
+        }
       // Start from the vertex neighbours; while some ray reaches its face's clearance, take in every site
       // that can come within 1.5 times the exits seen on some face. Terminates: each round takes in at
       // least the site that set the clearance that was reached, and there are finitely many.

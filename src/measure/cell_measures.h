@@ -47,6 +47,9 @@ struct Measure_options {
   double relative_tolerance = 1e-8;  // per cell: estimated errors <= tolerance x volume (x distance
                                      //   integral for it)
   int threads = 1;
+  // True: each cell by the regions of one exit (box_cell_regions.h) where that applies; false: always the
+  // line cubature (cell_cubature.h; the tests compare them).
+  bool exit_regions = true;
   // When given, another thread may request it: measure_cells then throws Cancelled (it checks once per
   // cell) and returns nothing.
   const Cancellation* cancellation = nullptr;

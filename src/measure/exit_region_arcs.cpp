@@ -61,6 +61,7 @@ bool Exit_region_arcs::add_cap(const Vector3& n, double d, double terms) {
 
 bool Exit_region_arcs::find(const std::vector<Inverse_exit>& exits, std::size_t j, double inverse_clip) {
   caps_.clear();
+  caps_.reserve(exits.size());
   arcs_.clear();
   touches_clip_ = false;
   const Inverse_exit& e = exits[j];
@@ -95,6 +96,9 @@ bool Exit_region_arcs::find(const std::vector<Inverse_exit>& exits, std::size_t 
     add_cap(n, d, own + o.slope + std::fabs(o.a));
     steepest_ = std::max(steepest_, o.slope);
   }
+  // The smallest caps first (the clip stays first): they are the likeliest to cut a circle away, which
+  // ends the loop below early for the many caps that bound nothing. The region does not depend on it.
+  std::sort(caps_.begin() + 1, caps_.end(), [](const Cap& p, const Cap& q) { return p.h > q.h; });
   for (std::size_t q = 0; q < caps_.size(); ++q) {
     const Cap& cap = caps_[q];
     cap_arcs_.assign(1, Arc{0, kTwoPi, 0, 0});
