@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@ struct Centroidal_python_result {
     case Centroidal_parameter::sites: name = "centres"; break;
     case Centroidal_parameter::masses: name = "masses"; break;
     case Centroidal_parameter::tolerance: name = "tolerance"; break;
+    case Centroidal_parameter::median_tolerance: name = "median_tolerance"; break;
     case Centroidal_parameter::max_iterations: name = "max_iterations"; break;
   }
   throw Input_error(name, 0, (e.site >= 0 ? "site " + std::to_string(e.site) + ": " : std::string()) + e.what());
@@ -144,7 +146,7 @@ void bind_centroidal(py::module_& module) {
   module.def(
       "centroidal",
       [](const py::object& centres, const py::object& weights, const py::object& domain, const py::object& masses,
-         double tolerance, int max_iterations, int threads) {
+         double tolerance, std::optional<double> median_tolerance, int max_iterations, int threads) {
         check_thread_count(threads);
         const std::vector<Site> sites = sites_from_python(centres, weights);
         const Axis_box box = domain_from_python(domain);
@@ -153,6 +155,7 @@ void bind_centroidal(py::module_& module) {
           // As the command line, in its order: the options, then the sites and masses.
           check_centroidal_domain(box);
           check_centroidal_tolerance(tolerance);
+          if (median_tolerance) check_centroidal_tolerance(*median_tolerance, Centroidal_parameter::median_tolerance);
           check_centroidal_iterations(max_iterations);
           check_centroidal_sites(sites, fractions, box);
         } catch (const Centroidal_parameter_error& e) {
@@ -161,6 +164,7 @@ void bind_centroidal(py::module_& module) {
         const Centroidal_result result = interruptible_call([&](const Cancellation& cancellation) {
           Centroidal_options options;
           options.tolerance = tolerance;
+          options.median_tolerance = median_tolerance;
           options.max_iterations = max_iterations;
           options.threads = threads;
           options.cancellation = &cancellation;
@@ -169,8 +173,8 @@ void bind_centroidal(py::module_& module) {
         return result_to_python(result);
       },
       "centres"_a, "weights"_a, "domain"_a, py::kw_only(), "masses"_a = py::none(), "tolerance"_a = 1e-6,
-      "max_iterations"_a = 100, "threads"_a = 1,
-      R"(centroidal(centres, weights, domain, *, masses=None, tolerance=1e-6, max_iterations=100, threads=1) -> CentroidalResult
+      "median_tolerance"_a = py::none(), "max_iterations"_a = 100, "threads"_a = 1,
+      R"(centroidal(centres, weights, domain, *, masses=None, tolerance=1e-6, median_tolerance=None, max_iterations=100, threads=1) -> CentroidalResult
 
 The centroidal Apollonius diagram in a box (paper section 7; the command line's 'centroidal'): moves
 the sites to the geometric medians of their cells and sets the weights so that each cell holds its
@@ -182,6 +186,8 @@ masses: None (equal), or (n,) target volumes as fractions of the domain's volume
   summing to 1 within 1e-9.
 tolerance: stop when every relative volume error |M_i - m_i| / M_i and every median residual, each
   with its quadrature error estimate, is at most this; from 1e-10 to 0.5.
+median_tolerance: None (tolerance), or the median residuals' own tolerance, from 1e-10 to 0.5 (the
+  volumes still to tolerance).
 max_iterations: 1 to 100000; the state reached then is returned with converged False.
 threads: 1 to 1024 worker threads; the result is the same for every number.
 Returns CentroidalResult: .centres, .weights (the command line's output, the same doubles), .converged,

@@ -145,6 +145,8 @@ BAD_PARAMETERS = [
      "must lie in [1e-10, 0.5], not 9.9999999999999994e-12"),
     ("a tolerance too loose", {"tolerance": 0.7}, ["--tolerance", "0.7"], "--tolerance: ", "tolerance: ",
      "must lie in [1e-10, 0.5], not 0.69999999999999996"),
+    ("a median tolerance too loose", {"median_tolerance": 0.7}, ["--median-tolerance", "0.7"], "--median-tolerance: ",
+     "median_tolerance: ", "must lie in [1e-10, 0.5], not 0.69999999999999996"),
     ("no iteration", {"max_iterations": 0}, ["--max-iterations", "0"], "--max-iterations: ", "max_iterations: ",
      "needs an integer from 1 to 100000, not 0"),
     ("too many iterations", {"max_iterations": 100001}, ["--max-iterations", "100001"], "--max-iterations: ",

@@ -59,6 +59,7 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
                                      const Axis_box& domain, const Centroidal_options& options) {
   check_centroidal_domain(domain);
   check_centroidal_tolerance(options.tolerance);
+  if (options.median_tolerance) check_centroidal_tolerance(*options.median_tolerance, Centroidal_parameter::median_tolerance);
   check_centroidal_iterations(options.max_iterations);
   check_centroidal_sites(initial, mass_fractions, domain);
   const auto start = std::chrono::steady_clock::now();
@@ -68,15 +69,18 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
   std::vector<double> targets(n);
   for (std::size_t i = 0; i < n; ++i) targets[i] = mass_fractions[i] * volume;
   const double tolerance = options.tolerance;
+  const double median_tolerance = options.median_tolerance.value_or(tolerance);
 
   Centroidal_result result;
   const auto report = [&](const std::string& message) {
     result.reports.push_back(message);
     if (options.on_report) options.on_report(message);
   };
-  // The quadrature tolerance follows the errors: loose while they are large, tolerance / 20 at the end.
+  // The quadrature tolerance follows the errors: loose while they are large, the tighter tolerance / 20 at
+  // the end.
   double quadrature = 1e-4;
-  const auto next_quadrature = [&](double error) { quadrature = std::clamp(0.05 * error, tolerance / 20, 1e-4); };
+  const double quadrature_floor = std::min(tolerance, median_tolerance) / 20;
+  const auto next_quadrature = [&](double error) { quadrature = std::clamp(0.05 * error, quadrature_floor, 1e-4); };
 
   const auto evaluate = [&](const std::vector<Site>& at, const std::vector<double>& volumes, const Axis_box& box,
                             double quadrature_tolerance, int threads) {
@@ -105,7 +109,9 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
     // 1. Weight steps (weight_step.h), a second or third while the volumes lag far behind the medians.
     row.energy_error = state.energy_error;
     for (int newton = 0; newton < kWeightStepsPerIteration; ++newton) {
-      if (newton > 0 && max_mass_error(state, targets) <= std::max(tolerance, 0.1 * max_median_error(state))) break;
+      if (newton > 0 && max_mass_error(state, targets) <= std::max(tolerance, 0.1 * tolerance / median_tolerance *
+                                                                                  max_median_error(state)))
+        break;
       const std::vector<double> direction = newton_weight_direction(state.measures, targets);
       const double floor = 0.5 * std::min(1.0, least_volume_ratio(state, targets));
       // The step s along it: from 1, then by safeguarded regula falsi on the slope (M - m) . delta, which
@@ -149,7 +155,7 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
     row.median_error = options.move_sites ? max_median_error(state) : 0;
 
     // 2. Stop?
-    if (row.mass_error <= tolerance && row.median_error <= tolerance) {
+    if (row.mass_error <= tolerance && row.median_error <= median_tolerance) {
       row.seconds = seconds();
       result.history.push_back(row);
       if (options.on_iteration) options.on_iteration(row);

@@ -6,7 +6,7 @@
 //     (weight_step.h: E4 never decreases, up to quadrature error).
 //  2. Stop if, at the accepted weights, every cell's relative volume error |M_i - m_i| / M_i and every
 //     median residual |G_i| / m_i (median_step.h), each plus its quadrature error estimate, are at most
-//     the tolerance.
+//     the tolerance (the residuals: the median tolerance, when one is given).
 //  3. Site step: one Newton step toward each cell's geometric median, halved while it would hide a site
 //     or nearly empty a cell, shortened where it would leave the domain.
 // Every diagram is the certified one; the integrals are cubatures (measure/cell_measures.h) whose
@@ -17,6 +17,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ struct Centroidal_iteration {
 
 struct Centroidal_options {
   double tolerance = 1e-6;
+  // Of the median residuals, when it differs from that of the volumes (say, volumes to 1e-4 and sites
+  // within 1e-2 of their medians: capacity-constrained partitions that need the masses more than the
+  // medians). Nothing: `tolerance`.
+  std::optional<double> median_tolerance;
   int max_iterations = 100;
   int threads = 1;
   bool move_sites = true;  // false: only the weights (a capacity-constrained diagram of fixed sites)

@@ -31,9 +31,9 @@ void check_centroidal_domain(const Axis_box& domain) {
       refuse(Centroidal_parameter::domain, "needs X0 < X1, Y0 < Y1 and Z0 < Z1 (a box with a volume)");
 }
 
-void check_centroidal_tolerance(double tolerance) {
+void check_centroidal_tolerance(double tolerance, Centroidal_parameter which) {
   if (!(tolerance >= kLeastCentroidalTolerance && tolerance <= kGreatestCentroidalTolerance))
-    refuse(Centroidal_parameter::tolerance, "must lie in [1e-10, 0.5], not " + printed(tolerance));
+    refuse(which, "must lie in [1e-10, 0.5], not " + printed(tolerance));
 }
 
 void check_centroidal_iterations(int max_iterations) {

@@ -13,7 +13,7 @@
 
 namespace apollonius {
 
-enum class Centroidal_parameter { domain, sites, masses, tolerance, max_iterations };
+enum class Centroidal_parameter { domain, sites, masses, tolerance, median_tolerance, max_iterations };
 
 // The reason says what is wrong without naming the parameter ("must lie in [1e-10, 0.5], not 0"); site is
 // the 0-based site or mass it is about, or -1.
@@ -31,8 +31,9 @@ inline constexpr int kMostCentroidalIterations = 100000;
 
 // Finite, with X0 < X1, Y0 < Y1 and Z0 < Z1.
 void check_centroidal_domain(const Axis_box& domain);
-// In [kLeastCentroidalTolerance, kGreatestCentroidalTolerance].
-void check_centroidal_tolerance(double tolerance);
+// In [kLeastCentroidalTolerance, kGreatestCentroidalTolerance]; `which` names it in the error (the
+// tolerance of the volumes, or that of the medians).
+void check_centroidal_tolerance(double tolerance, Centroidal_parameter which = Centroidal_parameter::tolerance);
 // From 1 to kMostCentroidalIterations.
 void check_centroidal_iterations(int max_iterations);
 // At least one site; one mass fraction per site, each positive and finite, summing to 1 within

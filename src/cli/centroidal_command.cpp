@@ -2,6 +2,7 @@
 
 #include <iomanip>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct Centroidal_command {
   std::vector<double> domain;  // X0 Y0 Z0 X1 Y1 Z1
   std::string masses;          // empty: equal masses
   double tolerance = 1e-6;
+  std::optional<double> median_tolerance;  // nothing: tolerance
   int max_iterations = 100;
   std::string output;
   std::string history;
@@ -44,11 +46,14 @@ int run(const Centroidal_command& command, std::ostream& out, std::ostream& err)
   try {
     check_centroidal_domain(domain);
     check_centroidal_tolerance(command.tolerance);
+    if (command.median_tolerance)
+      check_centroidal_tolerance(*command.median_tolerance, Centroidal_parameter::median_tolerance);
     check_centroidal_iterations(command.max_iterations);
   } catch (const Centroidal_parameter_error& e) {
-    const char* option = e.parameter == Centroidal_parameter::domain      ? "--domain"
-                         : e.parameter == Centroidal_parameter::tolerance ? "--tolerance"
-                                                                          : "--max-iterations";
+    const char* option = e.parameter == Centroidal_parameter::domain             ? "--domain"
+                         : e.parameter == Centroidal_parameter::tolerance        ? "--tolerance"
+                         : e.parameter == Centroidal_parameter::median_tolerance ? "--median-tolerance"
+                                                                                 : "--max-iterations";
     throw Usage_error(std::string(option) + ": " + e.what());
   }
 
@@ -61,6 +66,7 @@ int run(const Centroidal_command& command, std::ostream& out, std::ostream& err)
     masses = read_masses(command.masses, input.sites.size());
   Centroidal_options options;
   options.tolerance = command.tolerance;
+  options.median_tolerance = command.median_tolerance;
   options.max_iterations = command.max_iterations;
   options.threads = command.diagram.threads;
   options.on_report = [&](const std::string& message) { err << "centroidal: " << message << '\n'; };
@@ -95,7 +101,9 @@ int run(const Centroidal_command& command, std::ostream& out, std::ostream& err)
   if (!result.converged) {
     err << "centroidal: not converged within " << command.max_iterations << " iterations (max relative mass error "
         << round_trip(last.mass_error) << ", median residual " << round_trip(last.median_error) << ", tolerance "
-        << round_trip(command.tolerance) << "); the outputs hold the state reached\n";
+        << round_trip(command.tolerance);
+    if (command.median_tolerance) err << ", median tolerance " << round_trip(*command.median_tolerance);
+    err << "); the outputs hold the state reached\n";
     return EXIT_DISCREPANCIES;
   }
   return EXIT_OK;
@@ -127,6 +135,10 @@ Command_run add_centroidal_command(CLI::App& app) {
       ->check(finite_number)
       ->type_name("T")
       ->capture_default_str();
+  sub->add_option("--median-tolerance", command->median_tolerance,
+                  "stop on the median residuals at T2 instead (default: T); the volumes still at T")
+      ->check(finite_number)
+      ->type_name("T2");
   sub->add_option("--max-iterations", command->max_iterations, "stop after K iterations (exit 1 if not converged)")
       ->check(integer_in_range(1, kMostCentroidalIterations))
       ->type_name("K")

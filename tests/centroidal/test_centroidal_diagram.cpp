@@ -239,6 +239,27 @@ TEST_CASE("each bad parameter names its parameter, with the reason the command l
   CHECK(refused(not_a_number, kUnitCube, 1e-6, 100) ==
         std::make_tuple(P::masses, 1L, std::string("not a finite number: nan")));
   CHECK(std::get<0>(refused(masses, Axis_box{{0, 0, 0}, {0.5, 1, 1}}, 1e-6, 100)) == P::sites);
+  Centroidal_options loose_medians;
+  loose_medians.median_tolerance = 0.7;
+  CHECK_THROWS_WITH_AS(centroidal_diagram(sites, masses, kUnitCube, loose_medians),
+                       "must lie in [1e-10, 0.5], not 0.69999999999999996", Centroidal_parameter_error);
+}
+
+TEST_CASE("a median tolerance of its own: the volumes to the tolerance, the medians to theirs, sooner") {
+  const std::vector<double> masses = example_masses();
+  Centroidal_options both, own;
+  both.tolerance = own.tolerance = 1e-8;
+  own.median_tolerance = 1e-3;
+  const Centroidal_result strict = centroidal_diagram(example_sites(), masses, kUnitCube, both);
+  const Centroidal_result loose = centroidal_diagram(example_sites(), masses, kUnitCube, own);
+  REQUIRE(strict.converged);
+  REQUIRE(loose.converged);
+  const Centroidal_iteration& last = loose.history.back();
+  CHECK(last.mass_error <= 1e-8);
+  CHECK(last.median_error <= 1e-3);
+  CHECK(last.median_error > 1e-8);  // it stopped on the looser medians,
+  CHECK(loose.history.size() < strict.history.size());  // and sooner
+  check_energy_never_decreases(loose);
 }
 
 TEST_CASE("a cancellation stops the loop: requested before, at once; during, Cancelled or the whole answer") {

@@ -102,6 +102,8 @@ TEST_CASE("centroidal: usage errors name the option, exit 2, no output") {
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "nan"}, "needs a finite number"},
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "1", "--tolerance", "0"},
             "--tolerance: must lie in [1e-10, 0.5]"},
+           {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "1", "--median-tolerance", "0"},
+            "--median-tolerance: must lie in [1e-10, 0.5]"},
            {{"centroidal", sites, "-o", out, "--domain", "0", "0", "0", "1", "1", "1", "--max-iterations", "0"},
             "--max-iterations"}}) {
     std::string command_line;
