@@ -159,7 +159,8 @@ bool beats_somewhere(const Inverse_exit& j, const Inverse_exit& k, const Exit_re
 
 std::optional<Cell_measure> integrate_box_cell(const std::vector<Site>& sites, const std::vector<bool>& active,
                                                Site_index i, const std::vector<Site_index>& proposed,
-                                               const Axis_box& box, double relative_tolerance) {
+                                               const Axis_box& box, double relative_tolerance,
+                                               double reach_hint) {
   const Site& site = sites[i];
   const Vector3 x{site.x, site.y, site.z};
   std::vector<Inverse_exit> planes;
@@ -186,6 +187,13 @@ std::optional<Cell_measure> integrate_box_cell(const std::vector<Site>& sites, c
   thread_local std::vector<Exit_region_arcs> regions;
   thread_local std::vector<char> nonempty;
   double farthest = 0;  // T_max
+  // The clip L >= 1 / clip_radius drops the exits that cannot come within it before their arcs are
+  // sought (the cap tests of exit_region_arcs.cpp). A region that reaches the clip shows the cell
+  // reaching beyond it: the radius doubles, up to none once it passes the box's farthest corner.
+  double corner = 0;
+  for (int a = 0; a < 3; ++a) corner += std::pow(std::max(box.hi[a] - x[a], x[a] - box.lo[a]), 2);
+  corner = std::sqrt(corner);
+  double clip_radius = reach_hint < corner ? reach_hint : std::numeric_limits<double>::infinity();
   for (;;) {
     exits = planes;
     for (const Radial_cut& cut : cuts) {
@@ -196,10 +204,18 @@ std::optional<Cell_measure> integrate_box_cell(const std::vector<Site>& sites, c
     nonempty.assign(exits.size(), 0);
     double least = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < exits.size(); ++j) {
-      if (!regions[j].find(exits, j, 0)) continue;
-      if (regions[j].touches_clip()) return std::nullopt;
+      if (!regions[j].find(exits, j, std::isfinite(clip_radius) ? 1 / clip_radius : 0)) continue;
+      if (regions[j].touches_clip()) {
+        if (!std::isfinite(clip_radius)) return std::nullopt;  // unbounded by rounding
+        least = -1;  // sought again with a larger clip
+        break;
+      }
       nonempty[j] = 1;
       least = std::min(least, regions[j].least_along_arcs(exits[j].a, exits[j].b));
+    }
+    if (least == -1) {
+      clip_radius = 2 * clip_radius < corner ? 2 * clip_radius : std::numeric_limits<double>::infinity();
+      continue;
     }
     if (!(least > 0)) return std::nullopt;
     farthest = 1 / least;

@@ -35,6 +35,7 @@
 // The median Hessian and the volume derivatives have none (they only steer Newton's steps).
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -49,9 +50,11 @@ namespace apollonius {
 // are the sites to start from (any; the vertex neighbours make it fast). Nothing when this method does
 // not apply, and the line cubature (cell_cubature.h) must be used: a cut with a zero numerator (a pair
 // hidden in floating point), a pair too close to measure at the cell's reach (exit_regions.h), a site on
-// the box's boundary, or a region that rounding leaves unbounded.
+// the box's boundary, or a region that rounding leaves unbounded. `reach_hint`: a guess at how far the
+// cell reaches from its site (a wrong one costs time only; infinity: none).
 std::optional<Cell_measure> integrate_box_cell(const std::vector<Site>& sites, const std::vector<bool>& active,
                                                Site_index i, const std::vector<Site_index>& proposed,
-                                               const Axis_box& box, double relative_tolerance);
+                                               const Axis_box& box, double relative_tolerance,
+                                               double reach_hint = std::numeric_limits<double>::infinity());
 
 }  // namespace apollonius

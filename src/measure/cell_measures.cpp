@@ -1,6 +1,7 @@
 #include "measure/cell_measures.h"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -25,6 +26,13 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
   std::vector<bool> active(sites.size(), true);
   for (const Hidden_site& h : diagram.hidden) active[h.site] = false;
   const std::vector<std::vector<Site_index>> neighbours = vertex_neighbours(diagram);
+  // How far each cell reaches, guessed from its vertices (box_cell_regions.h): 1.25 times the farthest,
+  // |v - x_i| = r + w_i. Infinity for a cell without a vertex.
+  std::vector<double> reach_hint(sites.size(), 0.0);
+  for (const Diagram_vertex& v : diagram.vertices)
+    for (Site_index i : v.tie_set) reach_hint[i] = std::max(reach_hint[i], 1.25 * (v.rounded[3] + sites[i].w));
+  for (double& hint : reach_hint)
+    if (!(hint > 0)) hint = std::numeric_limits<double>::infinity();
   Cell_cubature_options cubature;
   cubature.relative_tolerance = options.relative_tolerance;
   cubature.cancellation = options.cancellation;
@@ -37,7 +45,7 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
       if (!active[i]) return;
       if (options.exit_regions)
         if (std::optional<Cell_measure> m = integrate_box_cell(sites, active, static_cast<Site_index>(i), neighbours[i],
-                                                               domain, options.relative_tolerance)) {
+                                                               domain, options.relative_tolerance, reach_hint[i])) {
           measures[i] = std::move(*m);
           return;
         }
