@@ -139,7 +139,13 @@ bool Exit_region_arcs::find(const std::vector<Inverse_exit>& exits, std::size_t 
       keep_within(cap_arcs_, std::atan2(B, A), half_width, uncertainty, scratch_);
     }
     if (q == 0 && !cap_arcs_.empty()) touches_clip_ = true;
-    for (const Arc& arc : cap_arcs_) arcs_.push_back({q, arc});
+    for (const Arc& arc : cap_arcs_) {
+      Region_arc r{q, arc, {}, {}};
+      Vector3 tangent;
+      point_on_cap(cap, arc.begin, r.first, tangent);
+      point_on_cap(cap, arc.end, r.last, tangent);
+      arcs_.push_back(r);
+    }
   }
   return !arcs_.empty();
 }
@@ -152,8 +158,7 @@ double Exit_region_arcs::least_along_arcs(double a, const Vector3& b) const {
     const double base = a + cap.h * dot(b, cap.m);
     const double b1 = cap.rho * dot(b, cap.e1), b2 = cap.rho * dot(b, cap.e2);
     const double amplitude = std::sqrt(b1 * b1 + b2 * b2);
-    const auto at = [&](double psi) { return base + b1 * std::cos(psi) + b2 * std::sin(psi); };
-    least = std::min({least, at(r.arc.begin), at(r.arc.end)});
+    least = std::min({least, a + dot(b, r.first), a + dot(b, r.last)});
     double lowest = std::atan2(b2, b1) + kPi;  // where the cosine is -1
     lowest -= kTwoPi * std::floor(lowest / kTwoPi);
     if (lowest >= r.arc.begin && lowest <= r.arc.end) least = std::min(least, base - amplitude);

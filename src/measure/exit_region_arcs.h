@@ -59,6 +59,7 @@ class Exit_region_arcs {
   struct Region_arc {
     std::size_t cap;
     Arc arc;
+    Vector3 first, last;  // the directions at its ends
   };
 
   // The region of exits[j]: where L_j >= L_k for every k and L_j >= inverse_clip (1 / R; 0 for no clip).
