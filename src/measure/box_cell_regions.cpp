@@ -129,16 +129,6 @@ class Median_region {
   Vector3 axis_, across_x_, across_y_;
 };
 
-Inverse_exit inverse_exit(const Radial_cut& cut) {
-  const double scale = 2 / cut.numerator;
-  return {scale * cut.weight_step,
-          {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
-          scale * std::sqrt(dot(cut.offset, cut.offset)),
-          cut.weight_step,
-          cut.numerator,
-          cut.site};
-}
-
 // Whether exit k beats exit j somewhere on the region of j (arcs), to within the margin.
 bool beats_somewhere(const Inverse_exit& j, const Inverse_exit& k, const Exit_region_arcs& arcs) {
   const double da = j.a - k.a;
@@ -203,17 +193,15 @@ std::optional<Cell_measure> integrate_box_cell(const std::vector<Site>& sites, c
     regions.resize(exits.size());
     nonempty.assign(exits.size(), 0);
     double least = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < exits.size(); ++j) {
+    bool reaches_clip = false;
+    for (std::size_t j = 0; j < exits.size() && !reaches_clip; ++j) {
       if (!regions[j].find(exits, j, std::isfinite(clip_radius) ? 1 / clip_radius : 0)) continue;
-      if (regions[j].touches_clip()) {
-        if (!std::isfinite(clip_radius)) return std::nullopt;  // unbounded by rounding
-        least = -1;  // sought again with a larger clip
-        break;
-      }
+      reaches_clip = regions[j].touches_clip();
       nonempty[j] = 1;
       least = std::min(least, regions[j].least_along_arcs(exits[j].a, exits[j].b));
     }
-    if (least == -1) {
+    if (reaches_clip) {
+      if (!std::isfinite(clip_radius)) return std::nullopt;  // unbounded by rounding
       clip_radius = 2 * clip_radius < corner ? 2 * clip_radius : std::numeric_limits<double>::infinity();
       continue;
     }
@@ -238,7 +226,7 @@ std::optional<Cell_measure> integrate_box_cell(const std::vector<Site>& sites, c
   for (const Radial_cut& cut : cuts)
     if (too_close_to_measure(cut, farthest)) return std::nullopt;
 
-  const Gauss_kronrod_rule rule = make_gauss_kronrod_rule<15>();
+  static const Gauss_kronrod_rule rule = make_gauss_kronrod_rule<15>();
   const double t3 = farthest * farthest * farthest;
   const std::array<double, kControlled> budget{kArcShare * relative_tolerance * t3,
                                                kArcShare * relative_tolerance * t3 * farthest,

@@ -27,6 +27,17 @@ struct Inverse_exit {
 };
 inline constexpr Site_index kNoSite = static_cast<Site_index>(-1);
 
+// The inverse exit of a cut whose numerator is positive.
+inline Inverse_exit inverse_exit(const Radial_cut& cut) {
+  const double scale = 2 / cut.numerator;
+  return {scale * cut.weight_step,
+          {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
+          scale * std::sqrt(dot(cut.offset, cut.offset)),
+          cut.weight_step,
+          cut.numerator,
+          cut.site};
+}
+
 // The cap m.u >= h (m a unit vector, -1 < h < 1) and its circle u(psi) = h m + rho (cos psi e1 + sin psi e2),
 // with (e1, e2, m) right-handed: increasing psi runs with the cap on its left.
 struct Cap {

@@ -157,13 +157,7 @@ std::optional<Cell_measure> integrate_clipped_cell(const Cut_candidates& candida
   for (const Radial_cut& cut : candidates.cuts) {
     if (cut.gap >= 2 * clip_radius) continue;  // never within the clip: its nearest point is at gap / 2
     if (!(cut.numerator > 0) || too_close_to_measure(cut, clip_radius)) return std::nullopt;
-    const double scale = 2 / cut.numerator;
-    exits.push_back({scale * cut.weight_step,
-                     {-scale * cut.offset[0], -scale * cut.offset[1], -scale * cut.offset[2]},
-                     scale * std::sqrt(dot(cut.offset, cut.offset)),
-                     cut.weight_step,
-                     cut.numerator,
-                     cut.site});
+    exits.push_back(inverse_exit(cut));
   }
   Clipped_cell cell(exits, clip_radius, relative_tolerance);
   Cell_measure m;
