@@ -16,6 +16,8 @@ namespace {
 
 // Halvings of one step before it is given up (2^-30 of a step is no step), and trials of a weight step.
 constexpr int kMaxHalvings = 30, kMaxTrials = 40;
+// The fraction of the first-order gain that an overshooting weight step must keep (Armijo's condition).
+constexpr double kSufficientIncrease = 1e-4;
 // Newton steps for the weights in one iteration, at most.
 constexpr int kWeightStepsPerIteration = 3;
 // Site steps mixed by Anderson acceleration.
@@ -116,6 +118,7 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
       const double floor = 0.5 * std::min(1.0, least_volume_ratio(state, targets));
       // The step s along it: from 1, then by safeguarded regula falsi on the slope (M - m) . delta, which
       // decreases in s (concavity) from its positive value at 0; a step with a defect counts as too long.
+      // Accepted while the slope is still >= 0, or when E4 rose by enough (weight_step.h, (b) and (c)).
       const Directional_derivative at_zero = directional_derivative(state.measures, targets, direction);
       double low = 0, low_slope = at_zero.value, high = 1, step = 1;
       bool accepted = false;
@@ -126,7 +129,10 @@ Centroidal_result centroidal_diagram(const std::vector<Site>& initial, const std
         Energy_evaluation evaluation = evaluate(trial, targets, domain, quadrature, options.threads);
         last_defect = defect(evaluation, targets, floor);
         const Directional_derivative slope = directional_derivative(evaluation.measures, targets, direction);
-        if (last_defect.empty() && slope.value >= -slope.uncertainty) {
+        const double gain = evaluation.energy - state.energy;
+        const bool increases = gain >= std::max(kSufficientIncrease * step * at_zero.value,
+                                                evaluation.energy_error + state.energy_error);
+        if (last_defect.empty() && (slope.value >= -slope.uncertainty || increases)) {
           accepted = true;
           row.weight_retries += trial_count;
           row.energy_error += evaluation.energy_error;

@@ -8,15 +8,19 @@
 // to mean zero. The cells of a partition of a connected box are connected by their faces, so the pinned L
 // is positive definite while every cell has a volume.
 //
-// Acceptance (step halving from s = 1). A step W' = W + s delta is accepted when
+// Acceptance (from s = 1, shortened by regula falsi on the slope). A step W' = W + s delta is accepted when
 //   (a) no site is hidden in the certified diagram of W' and every cell keeps at least half of
 //       min(1, min_i m_i(W) / M_i) of its target (the damping of Kitagawa, Merigot and Thibert, 2019, which
-//       keeps the cells from vanishing), and
-//   (b) (M - m(W')) . delta >= -sum_i |delta_i| e_i(W'), e_i the volume's error estimate.
-// Why E4 never decreases: E4 is concave along the segment from W to W', so its derivative there,
-// (M - m) . delta, decreases along it; by (b) it is still >= 0 at W' up to quadrature error, hence >= 0 on
-// the whole segment, and E4(W') >= E4(W) - s sum_i |delta_i| e_i. Near the maximum Newton's full step
-// passes (b) and converges quadratically.
+//       keeps the cells from vanishing), and either
+//   (b) (M - m(W')) . delta >= -sum_i |delta_i| e_i(W'), e_i the volume's error estimate, or
+//   (c) E4(W') - E4(W) >= max(c s (M - m(W)) . delta, E(W) + E(W')), with c = 1e-4 and E the energy's error
+//       estimate: Armijo's sufficient increase, and beyond the quadrature error.
+// Why E4 never decreases: under (b), E4 is concave along the segment from W to W', so its derivative there,
+// (M - m) . delta, decreases along it; it is still >= 0 at W' up to quadrature error, hence >= 0 on the
+// whole segment, and E4(W') >= E4(W) - s sum_i |delta_i| e_i. Under (c), by its comparison itself.
+// Newton's full step usually overshoots the maximum along delta a little (E4 is not quadratic), which
+// fails (b) but passes (c); (b) alone cost a refused trial, one more diagram and its measures, in most
+// iterations.
 #pragma once
 
 #include <vector>
