@@ -28,6 +28,12 @@ constexpr double kInnerShare = 0.1;
 // Panels per cell beyond which every panel is accepted as it is (reached_tolerance is then false when
 // the estimates miss the target): the bisections cannot multiply without bound.
 constexpr std::size_t kMaxPanels = 20000;
+// Rays per cell beyond which no piece of a line and no panel is refined further (reached_tolerance false
+// where an estimate then misses its target). Without it, a cell beside a pair of sites one ulp apart
+// refined pieces 16 deep in each of the 31 lines of each of 20,000 panels: minutes. With it, a cell costs
+// at most this many rays plus the lines of the panels pending when it is reached (at most 2 x 60 per face,
+// the depth of interval()).
+constexpr std::size_t kMaxRays = 2000000;
 // Events are bracketed to this width in b: the bracket's two-point rule then errs by about its width
 // squared times the jump in the slope of the line integrals, far below any tolerance, and the smooth
 // panels beside it end where the (b - b*)^(3/2) terms are smoothed by the substitution.
@@ -385,10 +391,16 @@ class Cell_integrator {
     const Vector3 p = l.at(a);
     const double p_norm = std::sqrt(l.s2 + a * a);
     if (!x) x = &l.table[least_slot(l, a)];
-    const double t = x->tau(a, p_norm);
+    double t = x->tau(a, p_norm);
+    // A piece's exit that misses one of its rays: the walk placed a tie wrongly, as it may beside a cut of
+    // a pair one ulp apart (tie quadratics with coefficients near 1e-31). The least exit is then taken.
+    if (!(t < kInfinity)) x = &l.table[least_slot(l, a)], t = x->tau(a, p_norm);
     const int exit = x->k;
     ++rays_;
     const double distance = t * p_norm;
+    // The box's planes bound every ray from a site inside it, and no candidate can bound one that they
+    // miss: measure_cells would otherwise take in sites for ever.
+    if (!(distance < kInfinity)) throw std::logic_error("integrate_cell: a ray from the site leaves the box");
     largest_exit_[l.face] = std::max(largest_exit_[l.face], distance);
     if (distance * (1 + kClearanceMargin) >= candidates_.clearance[l.face]) throw Clearance_exceeded();
     const double t2 = t * t, t3 = t2 * t;
@@ -453,9 +465,12 @@ class Cell_integrator {
       error[c] = kronrod_error(half * std::fabs(kronrod[c] - gauss[c]), half * resasc);
     }
     if (!within_budget(error, a1 - a0, kInnerShare) && depth < 16 && a1 - a0 > 1e-12) {
-      integrate_piece<kMedian>(l, a0, middle, exit, depth + 1, out);
-      integrate_piece<kMedian>(l, middle, a1, exit, depth + 1, out);
-      return;
+      if (rays_ < kMaxRays) {
+        integrate_piece<kMedian>(l, a0, middle, exit, depth + 1, out);
+        integrate_piece<kMedian>(l, middle, a1, exit, depth + 1, out);
+        return;
+      }
+      reached_ = false;
     }
     for (int c = 0; c < kComponents; ++c) out.value[c] += half * kronrod[c];
     for (int c = 0; c < kControlled; ++c) out.error[c] += error[c];
@@ -699,7 +714,7 @@ class Cell_integrator {
       if (hi < r) interval(face, hi, r, high, right, depth + 1, live);
       return;
     }
-    if (panel(face, l, r, depth >= 60 || r - l < 1e-12 || ++panels_ > kMaxPanels, live)) return;
+    if (panel(face, l, r, depth >= 60 || r - l < 1e-12 || ++panels_ > kMaxPanels || rays_ >= kMaxRays, live)) return;
     const double m = 0.5 * (l + r);
     const std::vector<int> middle = signature(face, m, live);
     interval(face, l, m, left, middle, depth + 1, live);

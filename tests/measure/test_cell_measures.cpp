@@ -17,6 +17,7 @@
 #include <cmath>
 #include <random>
 
+#include "io/read_sites.h"
 #include "measure/cell_cubature.h"
 #include "measure/cell_measures.h"
 #include "measure/gauss_kronrod_rule.h"
@@ -334,6 +335,40 @@ TEST_CASE("regression: measure_cells_volumes_exceed_box, sites on the box's wall
     CHECK(std::fabs(total - 1) <= 2 * total_error + 1e-15);
   }
   CHECK(cells > 150);
+}
+
+// Regressions of fuzz_box_cells beside two sites one ulp apart: measure_cells must end (it looped for
+// ever, or ran for minutes), with finite measures whose volumes fill the box within their estimates.
+TEST_CASE("regression: sites one ulp apart, a ray without an exit and a refinement without end") {
+  struct Case {
+    const char* file;
+    Axis_box box;
+    bool within_tolerance;  // whether every cell reaches the tolerance
+  };
+  const Case cases[] = {
+      {"measure_cells_loop_on_a_ray_without_exit_beside_sites_one_ulp_apart.balls",
+       {{-7, -7, -7}, {7, 7.0000000000000009, 7.0000000000000009}}, false},
+      {"cell_cubature_refines_for_minutes_beside_sites_one_ulp_apart.balls",
+       {{-5.34375, -5.34375, -5.34375}, {-1.28125, -1.6562499999999996, -1.65625}}, false}};
+  for (const Case& c : cases) {
+    CAPTURE(c.file);
+    const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + c.file, {}).sites;
+    const std::vector<Cell_measure> m = measure(sites, c.box, 1e-6);
+    const double volume = (c.box.hi[0] - c.box.lo[0]) * (c.box.hi[1] - c.box.lo[1]) * (c.box.hi[2] - c.box.lo[2]);
+    double total = 0, total_error = 0;
+    bool every_cell_reached = true;
+    for (const Cell_measure& cell : m) {
+      CHECK(std::isfinite(cell.volume));
+      CHECK(std::isfinite(cell.volume_error));
+      CHECK(cell.volume >= 0);
+      total += cell.volume, total_error += cell.volume_error;
+      every_cell_reached = every_cell_reached && cell.reached_tolerance;
+    }
+    CAPTURE(total);
+    CAPTURE(total_error);
+    CHECK(std::fabs(total - volume) <= total_error + 1e-9 * volume);
+    CHECK(every_cell_reached == c.within_tolerance);
+  }
 }
 
 TEST_CASE("weighted cells against Monte Carlo (5 standard deviations)") {
