@@ -310,6 +310,20 @@ class Cell_integrator {
       if (b1 != 0) keep(-b0 / b1);
       return;
     }
+    // A far below b1 (a cut and a plane, with weights one ulp apart): squared, the discriminant
+    // 4 A^2 (b0^2 + b1^2 s2 - A^2 s2) is what is left of two terms 4 b0^2 b1^2, and rounding erases it, with
+    // the tie, once A^2 is below about eps b1^2. Newton's method on b0 + b1 a - A |p| from -b0 / b1
+    // instead: its derivative b1 - A a / |p| stays within 1e-5 of b1, and each step squares the relative
+    // error, which starts at about A / b1 <= 1e-5, so two steps reach rounding.
+    if (std::fabs(A) <= 1e-5 * std::fabs(b1)) {
+      double r = -b0 / b1;
+      for (int step = 0; step < 2; ++step) {
+        const double norm = std::sqrt(l.s2 + r * r);
+        r -= (b0 + b1 * r - A * norm) / (b1 - A * r / norm);
+      }
+      if (r > lo && r < hi) roots[count++] = r;  // a root of the unsquared equation: no sign to check
+      return;
+    }
     const double qa = A * A - b1 * b1, qb = -2 * b0 * b1, qc = A * A * l.s2 - b0 * b0;
     if (std::fabs(qa) <= 1e-14 * (A * A + b1 * b1)) {
       if (qb != 0) keep(-qc / qb);
@@ -654,9 +668,9 @@ class Cell_integrator {
     return true;
   }
 
-  // A bracket of width <= event_width() around an event: two-point Gauss, its error estimated by the
-  // variation across it.
-  void bracket(int face, double l, double r, const std::vector<int>& from) {
+  // A bracket around an event: two-point Gauss, its error estimated by the variation across it, between
+  // its nodes and between the lines at its ends (`ends`, at l and r), which a jump may leave on one side.
+  void bracket(int face, double l, double r, const std::vector<int>& from, const Line_result (&ends)[2]) {
     throw_if_cancelled(options_.cancellation);
     const double half = 0.5 * (r - l), middle = 0.5 * (l + r), x = half / std::sqrt(3.0);
     const Line_result left = integrate_line(face, middle - x, from), right = integrate_line(face, middle + x, from);
@@ -664,7 +678,8 @@ class Cell_integrator {
     Errors error;
     for (int c = 0; c < kComponents; ++c) value[c] = half * (left.value[c] + right.value[c]);
     for (int c = 0; c < kControlled; ++c)
-      error[c] = half * (std::fabs(left.value[c] - right.value[c]) + left.error[c] + right.error[c]);
+      error[c] = half * (std::fabs(left.value[c] - right.value[c]) + left.error[c] + right.error[c]) +
+                 (r - l) * std::fabs(ends[0].value[c] - ends[1].value[c]);
     // Each face's error: its own variation across the bracket, and its lines' errors.
     std::vector<Cut_integral> cuts;
     for (const Line_result* side : {&left, &right})
@@ -697,20 +712,35 @@ class Cell_integrator {
     if (left != right) {
       double lo = l, hi = r;
       std::vector<int> high = right, narrow = live;
-      for (int step = 1; hi - lo > event_width(options_.relative_tolerance); ++step) {
-        if (step % 4 == 0) {
-          const std::vector<int> wider = narrow;
-          prune({face, -1, 1, lo, hi}, wider, narrow);
+      int step = 0;
+      const auto bisect_to = [&](double width) {
+        while (hi - lo > width) {
+          if (++step % 4 == 0) {
+            const std::vector<int> wider = narrow;
+            prune({face, -1, 1, lo, hi}, wider, narrow);
+          }
+          const double m = 0.5 * (lo + hi);
+          if (!(m > lo && m < hi)) return;  // adjacent doubles
+          std::vector<int> middle = signature(face, m, narrow);
+          if (middle == left)
+            lo = m;
+          else
+            hi = m, high = std::move(middle);
         }
-        const double m = 0.5 * (lo + hi);
-        std::vector<int> middle = signature(face, m, narrow);
-        if (middle == left)
-          lo = m;
-        else
-          hi = m, high = std::move(middle);
+      };
+      bisect_to(event_width(options_.relative_tolerance));
+      // The bracket's rule errs by its width times the jump of the line integrals across it: small at a
+      // kink, the usual event, but a cut nearly through the site (sites one ulp apart) has its pole on the
+      // face, and the line integrals jump there by a whole line's volume. The bracket then narrows until
+      // width x jump is within 1% of the cell's volume budget (or to adjacent doubles).
+      Line_result ends[2] = {integrate_line(face, lo, narrow), integrate_line(face, hi, narrow)};
+      const double jump = std::fabs(ends[0].value[kVolume] - ends[1].value[kVolume]);
+      if (jump * (hi - lo) > 0.12 * volume_budget_) {
+        bisect_to(0.12 * volume_budget_ / jump);
+        ends[0] = integrate_line(face, lo, narrow), ends[1] = integrate_line(face, hi, narrow);
       }
       if (lo > l) interval(face, l, lo, left, left, depth + 1, live);
-      bracket(face, lo, hi, narrow);
+      bracket(face, lo, hi, narrow, ends);
       if (hi < r) interval(face, hi, r, high, right, depth + 1, live);
       return;
     }

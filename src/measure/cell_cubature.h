@@ -19,8 +19,9 @@
 // through those roots (a kinetic lower envelope), then Gauss-Kronrod 7/15 on each smooth piece, halved
 // while its estimate is large. Outer, over b: the lines' sequences of exits change only at isolated
 // events (a vertex of the cell, a tie curve tangent to the line direction, a curve leaving the face);
-// events are bracketed by bisection on that sequence to a width w (the tolerance, within [1e-6, 1e-4])
-// and integrated by a two-point rule; between them the integrals are smooth in b but for (b - b*)^(1/2), ^(3/2) terms at the
+// events are bracketed by bisection on that sequence to a width w (the tolerance, within [1e-6, 1e-4]),
+// narrower where the line integrals jump across it (a cut nearly through the site), and integrated by a
+// two-point rule; between them the integrals are smooth in b but for (b - b*)^(1/2), ^(3/2) terms at the
 // events, which the substitution b = l + (r - l)(3 s^2 - 2 s^3) smooths, and Gauss-Kronrod 15/31 in s
 // integrates, halving a panel whose estimate misses its budget.
 //
