@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fuzz/fuzz_sites.h"
@@ -22,10 +23,14 @@ namespace {
 
 using namespace apollonius;
 
+// The box as six round-trip numbers, lo then hi.
+std::string box_text(const Axis_box& box) {
+  return round_trip(box.lo[0]) + ' ' + round_trip(box.lo[1]) + ' ' + round_trip(box.lo[2]) + ' ' +
+         round_trip(box.hi[0]) + ' ' + round_trip(box.hi[1]) + ' ' + round_trip(box.hi[2]);
+}
+
 [[noreturn]] void report(const char* what, const std::vector<Site>& sites, const Axis_box& box) {
-  std::cerr << what << " in the box " << round_trip(box.lo[0]) << ' ' << round_trip(box.lo[1]) << ' '
-            << round_trip(box.lo[2]) << ' ' << round_trip(box.hi[0]) << ' ' << round_trip(box.hi[1]) << ' '
-            << round_trip(box.hi[2]) << " on these sites:\n";
+  std::cerr << what << " in the box " << box_text(box) << " on these sites:\n";
   write_sites_text(std::cerr, sites, "fuzz_box_cells input");
   __builtin_trap();
 }
@@ -51,8 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int a = 0; a < 3; ++a) box.lo[a] -= margin, box.hi[a] += margin;
   static const bool print_input = std::getenv("APOLLONIUS_FUZZ_PRINT_SITES") != nullptr;
   if (print_input) {
-    std::cout << "box " << round_trip(box.lo[0]) << ' ' << round_trip(box.lo[1]) << ' ' << round_trip(box.lo[2]) << ' '
-              << round_trip(box.hi[0]) << ' ' << round_trip(box.hi[1]) << ' ' << round_trip(box.hi[2]) << '\n';
+    std::cout << "box " << box_text(box) << '\n';
     write_sites_text(std::cout, sites, "fuzz_box_cells input");
     std::cout.flush();
   }
