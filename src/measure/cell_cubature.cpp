@@ -125,7 +125,7 @@ class Cell_integrator {
  public:
   Cell_integrator(const Site& site, const Cut_candidates& candidates, const Axis_box& box,
                   const Cell_cubature_options& options)
-      : centre_{site.x, site.y, site.z}, candidates_(candidates), box_(box), options_(options),
+      : centre_{site.x, site.y, site.z}, candidates_(candidates), options_(options),
         inner_(make_gauss_kronrod_rule<15>()), outer_(make_gauss_kronrod_rule<15>()),
         clipped_(std::isfinite(options.clip_radius)), derivative_total_(candidates.cuts.size(), 0.0),
         area_total_(candidates.cuts.size(), 0.0), area_error_total_(candidates.cuts.size(), 0.0),
@@ -809,7 +809,6 @@ class Cell_integrator {
 
   const Vector3 centre_;
   const Cut_candidates& candidates_;
-  const Axis_box& box_;
   const Cell_cubature_options& options_;
   const Gauss_kronrod_rule inner_, outer_;
   std::vector<Exit> exits_;
