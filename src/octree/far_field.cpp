@@ -1,12 +1,15 @@
 #include "octree/far_field.h"
 
 #include <CGAL/FPU.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
+#include <type_traits>
 
 #include "diagram/cancellable_steps.h"
 #include "predicates/kernels.h"
@@ -275,6 +278,60 @@ class Far_field {
   std::vector<std::vector<Site_index>> patch_sites_;
 };
 
+// Sites tested for one vertex, by position in the lifted triangulation's sites; cleared in O(tested).
+class Tested_sites {
+ public:
+  explicit Tested_sites(std::size_t sites) : tested_(sites, false) {}
+  bool first_test(std::size_t position) {
+    if (tested_[position]) return false;
+    tested_[position] = true;
+    touched_.push_back(position);
+    return true;
+  }
+  void clear() {
+    for (std::size_t p : touched_) tested_[p] = false;
+    touched_.clear();
+  }
+
+ private:
+  std::vector<bool> tested_;
+  std::vector<std::size_t> touched_;
+};
+
+// The tie set of a vertex v of a lifted 3-face outside R among the escaping sites, or false if one of
+// them is strictly closer, through the triangulation's edges (lifted_triangulation.h): its lift lies in the
+// power cell of v's first site iff no neighbour of that site and no unplaced site beats it, and then the
+// ties are the unplaced ones that tie plus those reached from v's sites over edges between tied sites.
+// Cost: O((|tie set| + 1) * degree + unplaced) conflict tests, against O(escaping) for each vertex before.
+template <class Kernel>
+bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, const Lifted_triangulation& lifts,
+                           Tested_sites& tested, std::vector<Site_index>& tie) {
+  const auto& own = v.sites();
+  tie.assign(own.begin(), own.end());
+  tested.clear();
+  for (Site_index s : own) tested.first_test(lifts.position_of(s));
+  const auto beats = [&](Site_index s) {
+    if (!tested.first_test(lifts.position_of(s))) return false;
+    const Sign sign = Kernel::conflict(v, sites[s]);
+    if (sign == Sign::ZERO) tie.push_back(s);
+    return sign == Sign::NEGATIVE;
+  };
+  for (Site_index s : lifts.unplaced)
+    if (beats(s)) return false;
+  // tie[0] is v's first site, so its neighbours decide whether v is a vertex; the later passes find ties
+  // only (an unplaced site has no neighbours). A site beating v there contradicts the first pass, which the
+  // exact predicates cannot; the floating path's rounding can, and rejects v.
+  for (std::size_t k = 0; k < tie.size(); ++k)
+    for (Site_index s : lifts.neighbours_of(tie[k]))
+      if (beats(s)) {
+        if (k != 0 && std::is_same_v<Kernel, Certified_kernel>)
+          throw std::logic_error("far field: a site beats a vertex that its first site's neighbours accept");
+        return false;
+      }
+  std::sort(tie.begin(), tie.end());
+  return true;
+}
+
 // Whether lifted_triangulation.h's condition holds for every vertex outside R among the escaping sites: a
 // tie site i of a vertex x there has distance t = |x - p_i| - w_i > radius - |p_i - O| - w_i, so t + w_j >= 0
 // for every j when the least such bound plus the least weight is >= 0. Outward-rounded intervals.
@@ -306,8 +363,9 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   // vertex outside R (lifted_triangulation.h): O(E log E) for E escaping sites, whatever their ties at
   // infinity. Otherwise (weights far larger than the sites' spread) the patches' sites enumerated.
   const bool lifted = lifts_cover_far_vertices(sites, escaping, origin, radius);
-  std::vector<Quadruple_key> quadruples;
-  if (lifted) quadruples = lifted_triangulation_quadruples(sites, escaping, cancellation);
+  Lifted_triangulation lifts;
+  if (lifted) lifts = lifted_triangulation(sites, escaping, cancellation);
+  std::vector<Quadruple_key> quadruples = std::move(lifts.quadruples);
   std::vector<std::vector<Site_index>> patch_sites;
   if (!lifted || with_patch_sites) {
     // The six faces of the direction cube are refined independently; neighbouring patches share most of
@@ -330,14 +388,23 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   }
 
   // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
-  // point there), with its tie set among them.
+  // point there), with its tie set among them: through the lifts' edges where they cover it.
+  const auto outside_root = [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); };
   std::vector<std::vector<Found_vertex>> found(quadruples.size());
-  tbb::parallel_for(std::size_t{0}, quadruples.size(), [&](std::size_t q) {
-    throw_if_cancelled(cancellation);
-    const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
-    decide_quadruples<Kernel>(sites, quadruple, escaping,
-                              [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); },
-                              found[q], 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size()), [&](const tbb::blocked_range<std::size_t>& range) {
+    Tested_sites tested(lifts.sites.size());
+    std::vector<Site_index> tie;
+    for (std::size_t q = range.begin(); q != range.end(); ++q) {
+      throw_if_cancelled(cancellation);
+      if (!lifted) {
+        const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
+        decide_quadruples<Kernel>(sites, quadruple, escaping, outside_root, found[q], 0);
+        continue;
+      }
+      for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(quadruples[q], sites)).vertices)
+        if (outside_root(v) && tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie))
+          append_unique<Kernel>(found[q], 0, {tie, v});
+    }
   });
   // A vertex with five or more tied sites is found from several of their quadruples: kept once.
   std::vector<Found_vertex> vertices;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 
 #include "diagram/cancellable_steps.h"
 
@@ -29,7 +30,8 @@ struct Lift_kernel_rings
 struct Double_lift_kernel : CGAL::Kernel_d_interface<CGAL::Cartesian_wrap<Lift_kernel_rings, Double_lift_kernel>> {};
 
 struct Lifted_site {
-  std::int64_t index = -1;  // the site's index, -1 until set
+  std::int64_t index = -1;     // the site's index, -1 until set
+  std::size_t position = 0;    // its position in the sorted subset, once every site is inserted
 };
 template <class Lift_kernel>
 using Lift_triangulation = CGAL::Regular_triangulation<
@@ -40,9 +42,8 @@ using Lift_triangulation = CGAL::Regular_triangulation<
         CGAL::Triangulation_full_cell<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>>>>;
 
 template <class Lift_kernel>
-std::vector<std::array<Site_index, 4>> quadruples_with(const std::vector<Site>& sites,
-                                                      const std::vector<Site_index>& subset,
-                                                      const Cancellation* cancellation) {
+Lifted_triangulation triangulation_with(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
+                                        const Cancellation* cancellation) {
   using Triangulation = Lift_triangulation<Lift_kernel>;
   using FT = typename Lift_kernel::FT;
   Triangulation triangulation(4);
@@ -56,9 +57,45 @@ std::vector<std::array<Site_index, 4>> quadruples_with(const std::vector<Site>& 
     // A repeated lift is a repeated site: the first keeps the vertex (tie sets are completed by the caller).
     if (v != typename Triangulation::Vertex_handle() && v->data().index < 0) v->data().index = subset[k];
   }
-  std::vector<std::array<Site_index, 4>> quadruples;
+  Lifted_triangulation result;
+  result.sites = subset;
+  std::sort(result.sites.begin(), result.sites.end());
+  result.neighbours.resize(result.sites.size());
+  const auto position = [&](Site_index s) {
+    return static_cast<std::size_t>(std::lower_bound(result.sites.begin(), result.sites.end(), s) - result.sites.begin());
+  };
+  std::vector<bool> placed(result.sites.size(), false);
+  for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end(); ++v) {
+    v->data().position = position(static_cast<Site_index>(v->data().index));
+    placed[v->data().position] = true;
+  }
+  for (std::size_t i = 0; i < placed.size(); ++i)
+    if (!placed[i]) result.unplaced.push_back(result.sites[i]);
   const int dimension = triangulation.current_dimension();
-  if (dimension < 3) return quadruples;
+  // Each vertex's neighbours from its incident cells, repeats dropped by a stamp per site as they come:
+  // O(incident cells) per vertex, and no list longer than the neighbours (each edge lies in many cells).
+  if (dimension >= 1) {
+    std::vector<std::size_t> stamp(result.sites.size(), result.sites.size());
+    std::vector<typename Triangulation::Full_cell_const_handle> incident;
+    for (auto v = triangulation.vertices_begin(); v != triangulation.vertices_end(); ++v) {
+      if (triangulation.is_infinite(v)) continue;
+      const std::size_t a = v->data().position;
+      if (a % 256 == 0) throw_if_cancelled(cancellation);
+      incident.clear();
+      triangulation.incident_full_cells(typename Triangulation::Vertex_const_handle(v), std::back_inserter(incident));
+      std::vector<Site_index>& list = result.neighbours[a];
+      for (const auto& cell : incident)
+        for (int j = 0; j <= dimension; ++j) {
+          const auto w = cell->vertex(j);
+          if (triangulation.is_infinite(w) || w->data().position == a || stamp[w->data().position] == a) continue;
+          stamp[w->data().position] = a;
+          list.push_back(static_cast<Site_index>(w->data().index));
+        }
+      std::sort(list.begin(), list.end());
+    }
+  }
+  std::vector<std::array<Site_index, 4>>& quadruples = result.quadruples;
+  if (dimension < 3) return result;
   std::size_t visited = 0;
   for (auto cell = triangulation.full_cells_begin(); cell != triangulation.full_cells_end(); ++cell) {
     if (++visited % 4096 == 0) throw_if_cancelled(cancellation);
@@ -80,14 +117,19 @@ std::vector<std::array<Site_index, 4>> quadruples_with(const std::vector<Site>& 
   }
   cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
   quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
-  return quadruples;
+  return result;
 }
 
 }  // namespace
 
-std::vector<std::array<Site_index, 4>> lifted_triangulation_quadruples(const std::vector<Site>& sites,
-                                                                        const std::vector<Site_index>& subset,
-                                                                        const Cancellation* cancellation) {
+std::size_t Lifted_triangulation::position_of(Site_index s) const {
+  return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), s) - sites.begin());
+}
+
+const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s) const { return neighbours[position_of(s)]; }
+
+Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
+                                          const Cancellation* cancellation) {
   // The lifts' weights 2 w^2 are doubles exactly when w^2 is: then the filtered kernel of doubles decides
   // exactly, else the lazy exact one.
   const bool exact_squares = std::all_of(subset.begin(), subset.end(), [&](Site_index s) {
@@ -95,8 +137,8 @@ std::vector<std::array<Site_index, 4>> lifted_triangulation_quadruples(const std
     // (A square below 2^-969 could hide its rounding error below the subnormals.)
     return w == 0 || (std::fma(w, w, -(w * w)) == 0 && std::abs(w * w) >= 0x1p-969 && std::isfinite(2 * w * w));
   });
-  if (exact_squares) return quadruples_with<Double_lift_kernel>(sites, subset, cancellation);
-  return quadruples_with<CGAL::Epeck_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
+  if (exact_squares) return triangulation_with<Double_lift_kernel>(sites, subset, cancellation);
+  return triangulation_with<CGAL::Epeck_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
 }
 
 }  // namespace apollonius

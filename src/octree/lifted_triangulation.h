@@ -21,11 +21,29 @@
 
 namespace apollonius {
 
-// The quadruples (ascending, each once, in ascending order) of the sites of `subset` spanning a 3-face of
-// the regular triangulation of their lifts. Exact (CGAL's Epeck_d). Cost: O(k log k) expected for the
-// triangulation of k lifts in general position, plus its size.
-std::vector<std::array<Site_index, 4>> lifted_triangulation_quadruples(const std::vector<Site>& sites,
-                                                                        const std::vector<Site_index>& subset,
-                                                                        const Cancellation* cancellation = nullptr);
+// The regular triangulation of the lifts of a set of sites, as far as the far field needs it.
+//
+// Tie sets through its edges: a vertex z of the power diagram of the lifts lies in the cell of a site a iff
+// L_a(z) >= L_j(z) for every neighbour j of a (a power cell is the intersection of the half-spaces of its
+// facets, and each facet is shared with a neighbour; a triangulation refining the regular subdivision has
+// every such edge). The sites tied at z span a cell of the regular subdivision, which the triangulation
+// refines, so the edges among them connect them all. Lifts that are no vertex of the triangulation (hidden
+// by the others, or repeating another) can still tie at z: they are listed apart.
+struct Lifted_triangulation {
+  std::vector<std::array<Site_index, 4>> quadruples;  // ascending, each once, each ascending
+  std::vector<Site_index> sites;                      // the subset, ascending
+  // neighbours[i]: the sites joined to sites[i] by an edge, ascending; empty for an unplaced site.
+  std::vector<std::vector<Site_index>> neighbours;
+  std::vector<Site_index> unplaced;  // sites of the subset that are no vertex, ascending
+
+  std::size_t position_of(Site_index s) const;                       // in sites; s must be one of them
+  const std::vector<Site_index>& neighbours_of(Site_index s) const;  // s in sites
+};
+
+// The quadruples of the sites of `subset` spanning a 3-face of the regular triangulation of their lifts,
+// with its edges. Exact (CGAL's Epeck_d, or Epick_d with Mpzf where the weights square exactly). Cost:
+// O(k log k) expected for the triangulation of k lifts in general position, plus its size.
+Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
+                                          const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -1,7 +1,9 @@
 // lifted_triangulation.h's claim, checked against the brute-force diagram: every vertex whose distance t
 // has t + w_j >= 0 for all sites j is a root of a quadruple of its tie set that spans a 3-face of the
 // lifted triangulation. On every generator family (lattices, ties at one point and along a circle, 1-ulp
-// noise, duplicates, mixed signs), with the condition certified from the correctly rounded distance.
+// noise, duplicates, mixed signs), with the condition certified from the correctly rounded distance. And
+// the claim the far field's tie sets rest on: the tied sites that are vertices of the triangulation are
+// connected by its edges.
 #include <doctest/doctest.h>
 
 #include <CGAL/FPU.h>
@@ -48,6 +50,20 @@ bool has_face(const std::vector<Site_index>& tie, const std::set<Lifted_face>& f
   return false;
 }
 
+// Whether the placed sites of the (ascending) tie set are connected by edges among themselves.
+bool placed_ties_connected(const std::vector<Site_index>& tie, const Lifted_triangulation& lifts) {
+  std::vector<Site_index> placed;
+  for (Site_index s : tie)
+    if (!std::binary_search(lifts.unplaced.begin(), lifts.unplaced.end(), s)) placed.push_back(s);
+  if (placed.empty()) return false;
+  std::vector<Site_index> reached = {placed.front()};
+  for (std::size_t k = 0; k < reached.size(); ++k)
+    for (Site_index s : lifts.neighbours_of(reached[k]))
+      if (std::binary_search(placed.begin(), placed.end(), s) && std::find(reached.begin(), reached.end(), s) == reached.end())
+        reached.push_back(s);
+  return reached.size() == placed.size();
+}
+
 }  // namespace
 
 TEST_CASE("every vertex meeting the condition has a 3-face of the lifted triangulation among its tie set") {
@@ -67,7 +83,13 @@ TEST_CASE("every vertex meeting the condition has a 3-face of the lifted triangu
       std::vector<Site_index> active;
       for (Site_index s = 0; s < sites.size(); ++s)
         if (!hidden[s]) active.push_back(s);
-      const std::vector<Lifted_face> list = lifted_triangulation_quadruples(sites, active);
+      const Lifted_triangulation lifts = lifted_triangulation(sites, active);
+      const std::vector<Lifted_face>& list = lifts.quadruples;
+      for (std::size_t i = 0; i < lifts.sites.size(); ++i)
+        for (Site_index s : lifts.neighbours[i]) {
+          CHECK(s != lifts.sites[i]);
+          CHECK(std::binary_search(lifts.neighbours_of(s).begin(), lifts.neighbours_of(s).end(), lifts.sites[i]));
+        }
       CHECK(std::is_sorted(list.begin(), list.end()));
       CHECK(std::adjacent_find(list.begin(), list.end()) == list.end());
       const std::set<Lifted_face> faces(list.begin(), list.end());
@@ -81,6 +103,7 @@ TEST_CASE("every vertex meeting the condition has a 3-face of the lifted triangu
         CAPTURE(v.rounded[1]);
         CAPTURE(v.rounded[2]);
         CHECK(has_face(v.tie_set, faces));
+        CHECK(placed_ties_connected(v.tie_set, lifts));
       }
       limit.stop();
     }
@@ -91,12 +114,25 @@ TEST_CASE("every vertex meeting the condition has a 3-face of the lifted triangu
 
 TEST_CASE("fewer than four lifts, or lifts spanning less than a 3-space, give no quadruple") {
   const std::vector<Site> sites = {{0, 0, 0, 1}, {4, 0, 0, 1}, {0, 4, 0, 1}, {4, 4, 0, 1}, {8, 0, 0, 1}};
-  CHECK(lifted_triangulation_quadruples(sites, {0, 1, 2}).empty());
+  CHECK(lifted_triangulation(sites, {0, 1, 2}).quadruples.empty());
   // Five coplanar sites of one weight: their lifts span a plane.
-  CHECK(lifted_triangulation_quadruples(sites, {0, 1, 2, 3, 4}).empty());
+  CHECK(lifted_triangulation(sites, {0, 1, 2, 3, 4}).quadruples.empty());
   // One more weight lifts them into a 3-space: the quadruples with that site.
   std::vector<Site> more = sites;
   more.push_back({2, 2, 0, 2});
-  const auto q = lifted_triangulation_quadruples(more, {0, 1, 2, 3, 4, 5});
-  CHECK_FALSE(q.empty());
+  const Lifted_triangulation lifts = lifted_triangulation(more, {0, 1, 2, 3, 4, 5});
+  CHECK_FALSE(lifts.quadruples.empty());
+  CHECK(lifts.unplaced.empty());
+  CHECK(lifts.neighbours_of(5).size() == 5);  // the heavier ball is joined to every other
+}
+
+TEST_CASE("a repeated site is unplaced, with no neighbours; a ball inside another still has a lift") {
+  // Site 4 repeats site 0. Site 5 lies inside site 1's ball: its Apollonius cell is empty, but its lift's
+  // power cell is not (where t + w_j < 0 for some j), so it stays a vertex.
+  const std::vector<Site> sites = {{0, 0, 0, 1}, {4, 0, 0, 2}, {0, 4, 0, 1}, {0, 0, 4, 1}, {0, 0, 0, 1}, {4, 0.5, 0, 0.5}, {3, 3, 3, 1}};
+  const Lifted_triangulation lifts = lifted_triangulation(sites, {0, 1, 2, 3, 4, 5, 6});
+  CHECK(lifts.unplaced == std::vector<Site_index>{4});
+  CHECK(lifts.neighbours_of(4).empty());
+  CHECK_FALSE(lifts.neighbours_of(5).empty());
+  CHECK_FALSE(lifts.quadruples.empty());
 }
