@@ -17,7 +17,9 @@ namespace apollonius {
 // a derived error bound (docs/ERROR_BOUNDS.md), which answers only when certain; it may provide
 // `static std::optional<R> interval_stage(...)`, which replaces `evaluate<Interval>` (inside the same
 // Rounding_guard) and answers nothing instead of throwing, where most evaluations go on to the exact
-// stage and an exception would cost more than the predicate; and `using Exact_number = Rational;` when
+// stage and an exception would cost more than the predicate; it may provide
+// `static std::optional<R> ball_stage(...)`, double-double balls in round-to-nearest (vertex_ball.h),
+// tried where the intervals are not certain; and `using Exact_number = Rational;` when
 // its exact stage divides (the default, Exact, never does).
 template <class P, class = void>
 struct Exact_number_of {
@@ -47,6 +49,9 @@ class Filtered_predicate {
       } catch (const Uncertain_sign&) {
       }
     }
+    if constexpr (has_ball_stage<Predicate, Args...>(0)) {
+      if (const auto certain = Predicate::ball_stage(args...)) return *certain;
+    }
     counter().count_exact_stage();
     return Predicate::template evaluate<typename Exact_number_of<Predicate>::type>(args...);
   }
@@ -73,6 +78,15 @@ class Filtered_predicate {
   }
   template <class P, class... Args>
   static constexpr bool has_interval_stage(...) {
+    return false;
+  }
+
+  template <class P, class... Args>
+  static constexpr auto has_ball_stage(int) -> decltype(P::ball_stage(std::declval<const Args&>()...), true) {
+    return true;
+  }
+  template <class P, class... Args>
+  static constexpr bool has_ball_stage(...) {
     return false;
   }
 

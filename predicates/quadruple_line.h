@@ -89,8 +89,20 @@ void set_cone_terms(Quadruple_line<NT>& line) {
   line.discriminant = line.B * line.B - line.A * line.C;
 }
 
-template <class NT>
-Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
+// The pivot rule: the first of 3, 0, 1, 2 with n_k != 0, decided by certain_sign in NT (throws if uncertain).
+struct First_nonzero_pivot {
+  template <class NT>
+  int operator()(const Vector4<NT>& n, const std::array<Site, 4>&) const {
+    for (int k : {3, 0, 1, 2})
+      if (certain_sign(n[k]) != Sign::ZERO) return k;
+    return -1;
+  }
+};
+
+// `choose_pivot(n, sites)` returns the pivot, or -1 for rank M < 3; it must follow the rule above (the root
+// labels of vertex.h depend on the pivot), deciding the signs of n however it can.
+template <class NT, class Choose_pivot = First_nonzero_pivot>
+Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites, Choose_pivot choose_pivot = {}) {
   std::array<std::array<NT, 5>, 3> rows;
   for (int m = 0; m < 3; ++m) {
     const Relative_site<NT> r = relative_site<NT>(sites[0], sites[m + 1]);
@@ -111,12 +123,7 @@ Quadruple_line<NT> quadruple_line(const std::array<Site, 4>& sites) {
     const std::array<int, 3> c = others(j);
     line.n[j] = (j % 2 == 0) ? minor(c[0], c[1], c[2]) : -minor(c[0], c[1], c[2]);
   }
-  for (int k : {3, 0, 1, 2}) {
-    if (certain_sign(line.n[k]) != Sign::ZERO) {
-      line.pivot = k;
-      break;
-    }
-  }
+  line.pivot = choose_pivot(line.n, sites);
   if (line.pivot < 0) return line;
   const int k = line.pivot;
   // Cramer on the columns other than k: Q_j = n_k * Y_j = (-1)^k det(M_{-k} with column j replaced by c).

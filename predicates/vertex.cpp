@@ -95,7 +95,7 @@ void Vertex::enclose_exact() {
     if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact.discriminant, exact.denominator}))
       largest = std::max(largest.value_or(*e), *e);
   if (largest && (*largest > kPlainRange || *largest < -kPlainRange))
-    scaled_box_ = std::make_shared<const Scaled_box>(Scaled_box{*largest, enclose(exact, *largest)});
+    scaled_box_ = Computed_once<Scaled_box>(Scaled_box{*largest, enclose(exact, *largest)});
 }
 
 template <>

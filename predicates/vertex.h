@@ -4,7 +4,7 @@
 #pragma once
 
 #include <array>
-#include <memory>
+#include <optional>
 #include <type_traits>
 
 #include "predicates/computed_once.h"
@@ -12,6 +12,7 @@
 #include "predicates/quadratic.h"
 #include "predicates/quadruple_line.h"
 #include "predicates/root_sign.h"
+#include "predicates/vertex_ball.h"
 
 namespace apollonius {
 
@@ -65,9 +66,12 @@ class Vertex {
   Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box)
       : quadruple_(quadruple), root_(root), box_{box} {}
   Vertex(const Quadruple& quadruple, Root root, Vertex_coordinates<Exact> exact);
+  // From the double-double stage (vertex_ball.h): `box` encloses `ball`.
+  Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box, const Ball_coordinates& ball)
+      : quadruple_(quadruple), root_(root), box_{box}, ball_(std::optional<Ball_coordinates>(ball)) {}
   // From a filter's enclosure of X beyond the double range: `box` is infinite there, `scaled` holds X.
   Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box, Scaled_box scaled)
-      : quadruple_(quadruple), root_(root), box_{box}, scaled_box_(std::make_shared<const Scaled_box>(std::move(scaled))) {}
+      : quadruple_(quadruple), root_(root), box_{box}, scaled_box_(std::move(scaled)) {}
 
   const Quadruple& quadruple() const { return quadruple_; }
   const std::array<Site_index, 4>& sites() const { return quadruple_.indices; }
@@ -90,6 +94,14 @@ class Vertex {
   const std::array<Sign, 3>& rounding_sides() const;
   const std::array<Sign, 3>* rounding_sides_if_computed() const { return sides_.get(); }
 
+  // X as double-double balls (vertex_ball.h), computed on first use, in round-to-nearest; null where they
+  // cannot follow the vertex's root (a single root with A near 0, a discriminant near 0, X out of range).
+  const Ball_coordinates* ball_coordinates() const;
+  const Ball_coordinates* ball_coordinates_if_computed() const {
+    const std::optional<Ball_coordinates>* X = ball_.get();
+    return X != nullptr && *X ? &**X : nullptr;
+  }
+
   // For a vertex made from its exact coordinates (vertices_of's exact stage) or from wide intervals whose
   // X lies beyond [2^-500, 2^500]; else null.
   const Scaled_box* scaled_box() const { return scaled_box_.get(); }
@@ -105,7 +117,9 @@ class Vertex {
   Computed_once<Vertex_coordinates<Exact>> exact_;
   Computed_once<std::array<double, 4>> rounded_;
   Computed_once<std::array<Sign, 3>> sides_;
-  std::shared_ptr<const Scaled_box> scaled_box_;  // set when made (exact or wide), if X is out of range
+  Computed_once<std::optional<Ball_coordinates>> ball_;
+  // Set when made (exact or wide), if X is out of range; a Computed_once for its size (one pointer, shared by copies).
+  Computed_once<Scaled_box> scaled_box_;
 };
 
 template <>
@@ -126,6 +140,9 @@ decltype(auto) coordinates_for(const Vertex& v) {
     return v.coordinates<NT>();
   }
 }
+
+// X of the quadruple's root as double-double balls (vertex_ball.h), or nothing where they cannot follow it.
+std::optional<Ball_coordinates> ball_coordinates_of(const Quadruple& quadruple, Root root);
 
 // The exact centre and r of the vertex: x, y, z, r, each (a + b sqrt d) / denominator.
 std::array<Root_number<Exact>, 4> exact_point(const Vertex& v);

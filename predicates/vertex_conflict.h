@@ -46,6 +46,21 @@ struct Vertex_conflict_predicate {
     }
     return sign_if_certain(rhs - (X[0] * a.row[0] + X[1] * a.row[1] + X[2] * a.row[2] + X[3] * a.row[3]));
   }
+
+  // The same two tests on the vertex's balls, where the intervals cannot tell (vertex_ball.h).
+  static std::optional<Sign> ball_stage(const Vertex& v, const Site& s) {
+    const Ball_coordinates* X = v.ball_coordinates();
+    if (X == nullptr) return std::nullopt;
+    const Nearest_rounding_guard nearest;
+    const Site& o = v.origin();
+    const Ball_coordinates a = {ball_difference(s.x, o.x), ball_difference(s.y, o.y), ball_difference(s.z, o.z),
+                                ball_difference(s.w, o.w)};
+    const std::optional<Sign> valid = sign_if_certain((*X)[3] + (a[3] + a[3]));
+    if (!valid) return std::nullopt;
+    if (*valid == Sign::NEGATIVE) return Sign::POSITIVE;
+    const Double_double_ball rhs = a[0] * a[0] + a[1] * a[1] + a[2] * a[2] - a[3] * a[3];
+    return sign_if_certain(rhs - ((*X)[0] * a[0] + (*X)[1] * a[1] + (*X)[2] * a[2] + (*X)[3] * a[3]));
+  }
 };
 
 inline const Filtered_predicate<Vertex_conflict_predicate> vertex_conflict{};

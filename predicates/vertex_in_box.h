@@ -87,6 +87,28 @@ struct Vertex_in_box_predicate {
     return true;
   }
 
+  // The same on the vertex's balls (vertex_ball.h): vertices a few ulps from a bound (sites one ulp off a
+  // lattice, whose planes the dyadic boxes share).
+  static std::optional<bool> ball_stage(const Vertex& v, const Axis_box& box, const std::array<bool, 3>&) {
+    const Ball_coordinates* X = v.ball_coordinates();
+    if (X == nullptr) return std::nullopt;
+    const Nearest_rounding_guard nearest;
+    bool certain = true;
+    const auto side = [](const Double_double_ball& p, double bound) -> std::optional<Sign> {  // of p - bound
+      if (std::isinf(bound) && p.usable()) return bound > 0 ? Sign::NEGATIVE : Sign::POSITIVE;
+      return sign_if_certain(p - Double_double_ball(bound));
+    };
+    for (int a = 0; a < 3; ++a) {
+      const Double_double_ball p = absolute_coordinate(v.origin(), *X, a);
+      const std::optional<Sign> below = side(p, box.lo[a]);
+      const std::optional<Sign> above = side(p, box.hi[a]);
+      if (below == Sign::NEGATIVE || above == Sign::POSITIVE) return false;
+      certain = certain && below && above;
+    }
+    if (!certain) return std::nullopt;
+    return true;
+  }
+
   template <class NT>
   static bool evaluate(const Vertex& v, const Axis_box& box, const std::array<bool, 3>& closed_above) {
     Coordinates_against_doubles<NT> p(v);

@@ -5,7 +5,7 @@
 
 #include "predicates/correct_rounding.h"
 #include "predicates/double_double_ball.h"
-#include "predicates/quadruple_line.h"
+#include "predicates/vertex_ball.h"
 
 namespace apollonius {
 namespace {
@@ -25,37 +25,22 @@ std::optional<double> certified_rounding(const Double_double_ball& x) {
   return rounding_around(x.hi, std::fabs(x.lo), x.error);
 }
 
-Double_double_ball half(const Double_double_ball& x) { return {x.hi / 2, x.lo / 2, x.error / 2}; }
-
-// v_j = o_j + X_j / 2 and r = X_3 / 2 - w_0 with X_j = (Q_j A - B n_j + sigma n_j sqrt(discriminant)) / (A n_k)
-// (quadruple_line.h); throws Uncertain_sign when double-double precision cannot tell the structure.
-std::array<std::optional<double>, 4> certified_roundings_or_throw(const Vertex& v) {
-  using Ball = Double_double_ball;
-  const Quadruple_line<Ball> line = quadruple_line<Ball>(v.quadruple().sites);
-  if (line.pivot < 0) throw Uncertain_sign();
-  certain_sign(line.A);  // a single root with A = 0 (or an unsure A) goes to the exact stage
-  const Ball root_term = v.root() == Root::SINGLE ? Ball(0) : square_root(line.discriminant);
-  const Ball reciprocal = quotient(Ball(1), line.A * line.n[line.pivot]);
-  const Site& o = v.origin();
-  const double offset[4] = {o.x, o.y, o.z, -o.w};
-  std::array<std::optional<double>, 4> result;
-  for (int j = 0; j < 4; ++j) {
-    Ball numerator = line.Q[j] * line.A - line.B * line.n[j];
-    if (v.root() == Root::PLUS) numerator = numerator + line.n[j] * root_term;
-    if (v.root() == Root::MINUS) numerator = numerator - line.n[j] * root_term;
-    result[j] = certified_rounding(Ball(offset[j]) + half(numerator * reciprocal));
-  }
-  return result;
-}
-
 }  // namespace
 
+// v_j = o_j + X_j / 2 and r = X_3 / 2 - w_0 from the vertex's balls (vertex_ball.h). Balls computed here
+// are not kept: most vertices are rounded once, for output, and would hold them to the end.
 std::array<std::optional<double>, 4> certified_roundings(const Vertex& v) {
-  try {
-    return certified_roundings_or_throw(v);
-  } catch (const Uncertain_sign&) {
-    return {};
+  std::optional<Ball_coordinates> computed;
+  const Ball_coordinates* X = v.ball_coordinates_if_computed();
+  if (X == nullptr) {
+    computed = ball_coordinates_of(v.quadruple(), v.root());
+    if (!computed) return {};
+    X = &*computed;
   }
+  const Nearest_rounding_guard nearest;
+  std::array<std::optional<double>, 4> result;
+  for (int j = 0; j < 4; ++j) result[j] = certified_rounding(absolute_coordinate(v.origin(), *X, j));
+  return result;
 }
 
 const std::array<double, 4>& Vertex::rounded() const {
@@ -65,11 +50,25 @@ const std::array<double, 4>& Vertex::rounded() const {
 const std::array<Sign, 3>& Vertex::rounding_sides() const {
   return sides_.get_or_compute([&] {
     const std::array<double, 4>& r = rounded();
-    const std::array<Root_number<Exact>, 4> p = exact_point(*this);
+    const Ball_coordinates* X = ball_coordinates();
+    std::optional<std::array<Root_number<Exact>, 4>> p;  // exact, where the balls cannot tell
     std::array<Sign, 3> sides;
     // A coordinate beyond the double range rounds to an infinity, which no box bound equals: never asked.
-    for (int a = 0; a < 3; ++a)
-      sides[a] = std::isfinite(r[a]) ? compare(p[a], Root_number<Exact>{Exact(r[a]), Exact(0), Exact(0), Exact(1)}) : Sign::ZERO;
+    for (int a = 0; a < 3; ++a) {
+      if (!std::isfinite(r[a])) {
+        sides[a] = Sign::ZERO;
+        continue;
+      }
+      if (X != nullptr) {
+        const Nearest_rounding_guard nearest;
+        if (const std::optional<Sign> side = sign_if_certain(absolute_coordinate(origin(), *X, a) - Double_double_ball(r[a]))) {
+          sides[a] = *side;
+          continue;
+        }
+      }
+      if (!p) p = exact_point(*this);
+      sides[a] = compare((*p)[a], Root_number<Exact>{Exact(r[a]), Exact(0), Exact(0), Exact(1)});
+    }
     return sides;
   });
 }

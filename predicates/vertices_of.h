@@ -45,6 +45,10 @@ Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Interval> X
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Wide_interval> X);
 Vertex make_vertex(const Quadruple& q, Root root, Vertex_coordinates<Exact> X);
 
+// vertices_of's double-double stage: the vertices where the balls certify A != 0, the discriminant's sign,
+// and each root's validity; nothing otherwise.
+std::optional<Quadruple_vertices> vertices_from_balls(const Quadruple& q);
+
 struct Vertices_of_predicate {
   static constexpr const char* name = "vertices_of";
 
@@ -86,6 +90,10 @@ struct Vertices_of_predicate {
         largest = std::max(largest, std::fabs(d));  // an overflowing difference is infinite, hence large
     return !(largest <= 0x1p64) || largest < 0x1p-64;
   }
+
+  // Double-double balls (vertex_ball.h), for the quadruples of sites one ulp off a lattice, whose line's
+  // polynomials cancel beyond what intervals tell; not where A or the discriminant may vanish.
+  static std::optional<Quadruple_vertices> ball_stage(const Quadruple& q) { return vertices_from_balls(q); }
 
   template <class NT>
   static Quadruple_vertices evaluate(const Quadruple& q) {

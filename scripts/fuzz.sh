@@ -6,7 +6,8 @@
 # recorded Voronota --link output; fuzz_read_sites from the inputs of tests/data,
 # examples/ and tests/fuzz/seeds); crashing, leaking and slow inputs are kept in build-fuzz/artifacts/TARGET/.
 # Exits 1 if any target found one. Reproduce one with build-fuzz/tests/fuzz/TARGET FILE; for
-# fuzz_vertices and fuzz_diagram, APOLLONIUS_FUZZ_PRINT_SITES=1 also prints its sites as balls text.
+# fuzz_vertices, fuzz_vertex_stages and fuzz_diagram, APOLLONIUS_FUZZ_PRINT_SITES=1 also prints its sites
+# as balls text.
 # FUZZ_OPTIONS adds libFuzzer options to every run, e.g. FUZZ_OPTIONS="-fork=1 -ignore_timeouts=1
 # -ignore_ooms=1" to fuzz on past a known slow input.
 set -euo pipefail
@@ -19,10 +20,10 @@ mkdir -p "$build_dir"
 # sees the rounding modes it sets (-frounding-math, from CMakeLists.txt).
 cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DAPOLLONIUS_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" > "$build_dir/cmake.log" 2>&1 || { cat "$build_dir/cmake.log"; exit 1; }
-cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices fuzz_diagram fuzz_read_claims fuzz_contacts fuzz_box_cells
+cmake --build "$build_dir" -j "$(nproc)" --target fuzz_read_sites fuzz_vertices fuzz_vertex_stages fuzz_diagram fuzz_read_claims fuzz_contacts fuzz_box_cells
 
 corpus=$build_dir/corpus
-mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices" "$corpus/fuzz_diagram" "$corpus/fuzz_read_claims" "$corpus/fuzz_contacts" "$corpus/fuzz_box_cells"
+mkdir -p "$corpus/fuzz_read_sites" "$corpus/fuzz_vertices" "$corpus/fuzz_vertex_stages" "$corpus/fuzz_diagram" "$corpus/fuzz_read_claims" "$corpus/fuzz_contacts" "$corpus/fuzz_box_cells"
 cp tests/data/*.balls tests/data/vdrc/*.txt tests/data/regression/* examples/*.pdb tests/fuzz/seeds/* \
   "$corpus/fuzz_read_sites/"
 cp tests/data/voronota/ANO3_3CONNECT.link.txt tests/fuzz/claim_seeds/* "$corpus/fuzz_read_claims/"
@@ -32,13 +33,14 @@ cp tests/data/voronota/ANO3_3CONNECT.link.txt tests/fuzz/claim_seeds/* "$corpus/
 declare -A options=(
   [fuzz_read_sites]="-dict=tests/fuzz/read_sites.dict -timeout=20"
   [fuzz_vertices]="-max_len=512 -timeout=2"
+  [fuzz_vertex_stages]="-max_len=512 -timeout=2"
   [fuzz_diagram]="-max_len=512 -timeout=20"
   [fuzz_read_claims]="-max_len=4096 -timeout=20"
   [fuzz_contacts]="-max_len=512 -timeout=2"
   [fuzz_box_cells]="-max_len=512 -timeout=2"
 )
 status=0
-for target in ${FUZZ_TARGETS:-fuzz_read_sites fuzz_vertices fuzz_diagram fuzz_read_claims fuzz_contacts fuzz_box_cells}; do
+for target in ${FUZZ_TARGETS:-fuzz_read_sites fuzz_vertices fuzz_vertex_stages fuzz_diagram fuzz_read_claims fuzz_contacts fuzz_box_cells}; do
   artifacts=$build_dir/artifacts/$target
   mkdir -p "$artifacts"
   echo "fuzz: $target for $seconds s (log: $build_dir/$target.log)"
