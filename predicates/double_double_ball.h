@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 
 #include "predicates/sign.h"
 #include "predicates/unit_roundoff.h"
@@ -92,12 +93,18 @@ inline Double_double_ball operator*(const Double_double_ball& a, const Double_do
 Double_double_ball quotient(const Double_double_ball& a, const Double_double_ball& b);
 Double_double_ball square_root(const Double_double_ball& a);
 
-// The sign of every number of the ball, or Uncertain_sign.
-inline Sign certain_sign(const Double_double_ball& x) {
-  if (!x.usable()) throw Uncertain_sign();
+// The sign of every number of the ball, or nothing (zero is never certain): |hi + lo| >= |hi| - |lo| > error.
+inline std::optional<Sign> sign_if_certain(const Double_double_ball& x) {
+  if (!x.usable()) return std::nullopt;
   const double least = (std::fabs(x.hi) - std::fabs(x.lo)) * (1 - 0x1p-50);
-  if (!(least > x.error)) throw Uncertain_sign();
+  if (!(least > x.error)) return std::nullopt;
   return x.hi > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
+}
+
+// The same, or Uncertain_sign.
+inline Sign certain_sign(const Double_double_ball& x) {
+  if (const std::optional<Sign> s = sign_if_certain(x)) return *s;
+  throw Uncertain_sign();
 }
 
 }  // namespace apollonius

@@ -1,5 +1,5 @@
-// RAII guard: interval arithmetic needs the FPU rounding towards +infinity (CGAL's convention) while the
-// guard lives, and round-to-nearest is restored when it goes out of scope.
+// RAII guards. Interval arithmetic needs the FPU rounding towards +infinity (CGAL's convention) while the
+// guard lives; the caller's mode is restored when it goes out of scope.
 #pragma once
 
 #include <CGAL/FPU.h>
@@ -14,6 +14,18 @@ class Rounding_guard {
 
  private:
   CGAL::Protect_FPU_rounding<true> protect_;
+};
+
+// The same for round-to-nearest, which double-double balls need (vertex_ball.h) inside code that may run
+// under a Rounding_guard.
+class Nearest_rounding_guard {
+ public:
+  Nearest_rounding_guard() = default;
+  Nearest_rounding_guard(const Nearest_rounding_guard&) = delete;
+  Nearest_rounding_guard& operator=(const Nearest_rounding_guard&) = delete;
+
+ private:
+  CGAL::Protect_FPU_rounding<true> protect_{CGAL_FE_TONEAREST};
 };
 
 }  // namespace apollonius

@@ -4,26 +4,17 @@
 // box bounds, differ by a few ulps of the coordinates, which intervals cannot tell and 106 bits can.
 #pragma once
 
-#include <CGAL/FPU.h>
-
 #include <array>
 #include <cmath>
 #include <optional>
 
 #include "predicates/double_double_ball.h"
+#include "predicates/rounding_guard.h"
 #include "predicates/site.h"
 
 namespace apollonius {
 
 using Ball_coordinates = std::array<Double_double_ball, 4>;
-
-// The sign of every number of the ball, or nothing (zero is never certain).
-inline std::optional<Sign> sign_if_certain(const Double_double_ball& x) {
-  if (!x.usable()) return std::nullopt;
-  const double least = (std::fabs(x.hi) - std::fabs(x.lo)) * (1 - 0x1p-50);
-  if (!(least > x.error)) return std::nullopt;
-  return x.hi > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
-}
 
 // x - y, exactly (Knuth's TwoSum) unless it overflows, which leaves the ball unusable.
 inline Double_double_ball ball_difference(double x, double y) {
@@ -32,6 +23,7 @@ inline Double_double_ball ball_difference(double x, double y) {
   return d;
 }
 
+// Exact unless hi / 2 falls below 2^-1021, which the 2^-511 of any sum with it covers.
 inline Double_double_ball half(const Double_double_ball& x) { return {x.hi / 2, x.lo / 2, x.error / 2}; }
 
 // The vertex centre coordinate o_j + X_j / 2 (j < 3) or r = X_3 / 2 - w_0 (j = 3), o the origin site.
@@ -39,17 +31,5 @@ inline Double_double_ball absolute_coordinate(const Site& origin, const Ball_coo
   const double offset[4] = {origin.x, origin.y, origin.z, -origin.w};
   return Double_double_ball(offset[j]) + half(X[j]);
 }
-
-// Balls must be computed in round-to-nearest: the guard sets it for its lifetime (the filters' interval
-// stages round upwards).
-class Nearest_rounding_guard {
- public:
-  Nearest_rounding_guard() = default;
-  Nearest_rounding_guard(const Nearest_rounding_guard&) = delete;
-  Nearest_rounding_guard& operator=(const Nearest_rounding_guard&) = delete;
-
- private:
-  CGAL::Protect_FPU_rounding<true> protect_{CGAL_FE_TONEAREST};
-};
 
 }  // namespace apollonius
