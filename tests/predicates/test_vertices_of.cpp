@@ -213,7 +213,7 @@ TEST_CASE("enclosing_interval contains exact values beyond the double range") {
 // quadruple_line computes, for quadruples of every generator family: lattices and cospherical sites cancel
 // to exact zeros, scaled families sit at 2^+-300.
 TEST_CASE("the first stage's a priori bounds hold on every value of the line") {
-  std::size_t checked = 0;
+  std::size_t checked = 0, exact_zeros = 0;
   for (const std::string& name : site_family_names()) {
     for (std::uint64_t seed = 1; seed <= 60; ++seed) {
       CAPTURE(name);
@@ -241,6 +241,10 @@ TEST_CASE("the first stage's a priori bounds hold on every value of the line") {
           const Exact distance = Exact(x.value) - e;
           CHECK(CGAL::abs(distance) <= Exact(x.error_bound()));
           ++checked;
+          if (x.magnitude == 0) {  // certified ZERO (double_with_magnitude.h)
+            CHECK(certain_sign(e) == Sign::ZERO);
+            ++exact_zeros;
+          }
         };
         for (int j = 0; j < 4; ++j) within(fast.n[j], exact.n[j]);
         if (fast.pivot < 0) continue;
@@ -252,10 +256,27 @@ TEST_CASE("the first stage's a priori bounds hold on every value of the line") {
       }
     }
   }
-  MESSAGE(checked << " values within their bound");
+  MESSAGE(checked << " values within their bound, " << exact_zeros << " of them certified zeros");
   CHECK(checked > 100000);
+  CHECK(exact_zeros > 1000);
 }
 
+
+TEST_CASE("the first stage decides equal balls in one lattice plane (exact zeros) without the later stages") {
+  // Coplanar centres: n_3 (their orientation) is 0; equal weights: so are n_0, n_1, n_2 (the weight column).
+  const std::array<Site, 4> sites{{{0, 0, 4, 1.5}, {4, 0, 4, 1.5}, {0, 8, 4, 1.5}, {12, 4, 4, 1.5}}};
+  const Quadruple q = make_quadruple({0, 1, 2, 3}, std::vector<Site>(sites.begin(), sites.end()));
+  const std::optional<Quadruple_vertices> fast = Vertices_of_predicate::static_filter(q);
+  REQUIRE(fast.has_value());
+  CHECK(fast->rank_deficient);
+  CHECK(Vertices_of_predicate::evaluate<Exact>(q).rank_deficient);
+  // Equal balls off the plane: n_0 = n_1 = n_2 = 0 exactly, n_3 pivots; the vertex is found at once.
+  const std::array<Site, 4> spread{{{0, 0, 0, 1.5}, {4, 0, 0, 1.5}, {0, 4, 0, 1.5}, {0, 0, 4, 1.5}}};
+  const Quadruple r = make_quadruple({0, 1, 2, 3}, std::vector<Site>(spread.begin(), spread.end()));
+  const std::optional<Quadruple_vertices> found = Vertices_of_predicate::static_filter(r);
+  REQUIRE(found.has_value());
+  CHECK(found->vertices.size() == Vertices_of_predicate::evaluate<Exact>(r).vertices.size());
+}
 
 TEST_CASE("Double_with_magnitude: the depths of quadruple_line's values are those of docs/ERROR_BOUNDS.md") {
   const std::array<Site, 4> sites{{{0, 0, 0, 1}, {3, 0, 0, 2}, {0, 4, 0, 1.5}, {1, 1, 5, 0.5}}};
