@@ -101,6 +101,8 @@ inline std::optional<Sign> sign_if_certain(const Double_double_ball& x) {
   return x.hi > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
 }
 
+inline bool certainly_nonzero(const Double_double_ball& x) { return sign_if_certain(x).has_value(); }
+
 // The same, or Uncertain_sign.
 inline Sign certain_sign(const Double_double_ball& x) {
   if (const std::optional<Sign> s = sign_if_certain(x)) return *s;

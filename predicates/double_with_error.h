@@ -57,10 +57,8 @@ inline Double_with_error sqrt(const Double_with_error& a) {
   return {z, a.error / z * (1 + 4 * kUnitRoundoff) + kUnitRoundoff * z + Double_with_error::kUnderflow};
 }
 
-// The sign of every number within the bound, or Uncertain_sign. ZERO only for a bound of 0, which no
-// operation gives (each adds kUnderflow): an exact zero handed over by with_error (double_with_magnitude.h).
+// The sign of every number within the bound, or Uncertain_sign (never ZERO: every operation rounds).
 inline Sign certain_sign(const Double_with_error& x) {
-  if (x.error == 0 && x.value == 0) return Sign::ZERO;
   if (!(std::fabs(x.value) > x.error * Double_with_error::kChain)) throw Uncertain_sign();  // NaN included
   return x.value > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
 }

@@ -53,20 +53,18 @@ inline Double_with_magnitude operator-(const Double_with_magnitude& a) { return 
 inline Double_with_magnitude operator-(const Double_with_magnitude& a, const Double_with_magnitude& b) {
   return {a.value - b.value, a.magnitude + b.magnitude};
 }
-// A factor of magnitude 0 is exactly 0 (below), and so is the product: no underflow term.
 inline Double_with_magnitude operator*(const Double_with_magnitude& a, const Double_with_magnitude& b) {
-  if (a.magnitude == 0 || b.magnitude == 0) return {};
   return {a.value * b.value, a.magnitude * b.magnitude + Double_with_magnitude::kUnderflow};
 }
 
-// The sign of every number within the bound, or Uncertain_sign (NaN and infinity included). ZERO only for a
-// magnitude of 0: an input 0, a difference of equal doubles, or sums and products of those, all exact
-// (docs/ERROR_BOUNDS.md, "Doubles with magnitude"). Sites on a lattice make many (a plane's orientation).
+// The sign of every number within the bound, or Uncertain_sign (never ZERO; NaN and infinity included).
 inline Sign certain_sign(const Double_with_magnitude& x) {
-  if (x.magnitude == 0) return Sign::ZERO;
   if (!(std::fabs(x.value) > x.error_bound())) throw Uncertain_sign();
   return x.value > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
 }
+
+// Whether every number within the bound is nonzero (no exception: for the pivot rule of exact_quadruple_line.h).
+inline bool certainly_nonzero(const Double_with_magnitude& x) { return std::fabs(x.value) > x.error_bound(); }
 
 // The same number with a running bound, for the operations that follow.
 inline Double_with_error with_error(const Double_with_magnitude& x) { return {x.value, x.error_bound()}; }

@@ -33,6 +33,32 @@ std::optional<Quadruple_line<Exact>> line_from_point_minors(const std::array<Sit
 
 }  // namespace
 
+namespace {
+
+template <class NT>
+NT null_vector_minor(const std::array<Site, 4>& sites, int k) {
+  std::array<std::array<NT, 3>, 3> rows;
+  for (int m = 0; m < 3; ++m) {
+    const Relative_site<NT> r = relative_site<NT>(sites[0], sites[m + 1]);
+    for (int j = 0, t = 0; j < 4; ++j)
+      if (j != k) rows[m][t++] = r.row[j];
+  }
+  return rows[0][0] * (rows[1][1] * rows[2][2] - rows[1][2] * rows[2][1]) -
+         rows[0][1] * (rows[1][0] * rows[2][2] - rows[1][2] * rows[2][0]) +
+         rows[0][2] * (rows[1][0] * rows[2][1] - rows[1][1] * rows[2][0]);
+}
+
+}  // namespace
+
+// Intervals first: on a lattice the minor is computed exactly, a point, and [0, 0] is a certain zero.
+bool null_vector_entry_nonzero(const std::array<Site, 4>& sites, int k) {
+  {
+    const Rounding_guard guard;
+    if (const std::optional<Sign> s = sign_if_certain(null_vector_minor<Interval>(sites, k))) return *s != Sign::ZERO;
+  }
+  return certain_sign(null_vector_minor<Exact>(sites, k)) != Sign::ZERO;
+}
+
 Quadruple_line<Exact> exact_quadruple_line(const std::array<Site, 4>& sites) {
   std::optional<Quadruple_line<Exact>> line = line_from_point_minors(sites);
   if (!line) return quadruple_line<Exact>(sites);

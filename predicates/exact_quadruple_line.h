@@ -17,4 +17,20 @@ namespace apollonius {
 
 Quadruple_line<Exact> exact_quadruple_line(const std::array<Site, 4>& sites);
 
+// Whether n_k, a 3x3 minor of the site differences, is nonzero, exactly: a few dozen Mpzf operations.
+bool null_vector_entry_nonzero(const std::array<Site, 4>& sites, int k);
+
+// quadruple_line.h's pivot rule for number types that never certify a zero (Double_with_magnitude,
+// double-double balls): an entry NT shows nonzero is; one it cannot tell is decided exactly. Sites on a
+// lattice make exact zeros often (four centres in one plane, the weight column of equal balls), where
+// certain_sign would throw and send the quadruple on to the next stage.
+struct Pivot_exact_where_uncertain {
+  template <class NT>
+  int operator()(const Vector4<NT>& n, const std::array<Site, 4>& sites) const {
+    for (int k : {3, 0, 1, 2})
+      if (certainly_nonzero(n[k]) || null_vector_entry_nonzero(sites, k)) return k;
+    return -1;
+  }
+};
+
 }  // namespace apollonius

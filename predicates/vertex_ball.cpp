@@ -1,5 +1,6 @@
 #include "predicates/vertex_ball.h"
 
+#include "predicates/exact_quadruple_line.h"
 #include "predicates/quadruple_line.h"
 #include "predicates/rounding_guard.h"
 #include "predicates/vertex.h"
@@ -9,30 +10,6 @@ namespace apollonius {
 namespace {
 
 using Ball = Double_double_ball;
-
-// Whether n_k (quadruple_line.h), a 3x3 minor of the site differences, is nonzero: exactly, for the pivot
-// rule where its ball cannot tell (coplanar centres make n_3 = 0 exactly).
-bool null_vector_entry_nonzero(const std::array<Site, 4>& sites, int k) {
-  std::array<std::array<Exact, 3>, 3> rows;
-  for (int m = 0; m < 3; ++m) {
-    const Relative_site<Exact> r = relative_site<Exact>(sites[0], sites[m + 1]);
-    for (int j = 0, t = 0; j < 4; ++j)
-      if (j != k) rows[m][t++] = r.row[j];
-  }
-  const Exact determinant = rows[0][0] * (rows[1][1] * rows[2][2] - rows[1][2] * rows[2][1]) -
-                            rows[0][1] * (rows[1][0] * rows[2][2] - rows[1][2] * rows[2][0]) +
-                            rows[0][2] * (rows[1][0] * rows[2][1] - rows[1][1] * rows[2][0]);
-  return certain_sign(determinant) != Sign::ZERO;
-}
-
-// quadruple_line.h's rule, each sign from the ball where it is certain and exactly otherwise.
-struct Ball_pivot {
-  int operator()(const Vector4<Ball>& n, const std::array<Site, 4>& sites) const {
-    for (int k : {3, 0, 1, 2})
-      if (sign_if_certain(n[k]) || null_vector_entry_nonzero(sites, k)) return k;
-    return -1;
-  }
-};
 
 // lambda of the root (line_roots.h): (-B + sigma sqrt(D)) / A, or C / (-B - sigma sqrt(D)) where -B and
 // sigma sqrt(D) have opposite signs (no cancellation; valid for A near 0); -B / A for a single root with A
@@ -91,14 +68,14 @@ std::optional<bool> certainly_valid(const Ball_coordinates& X, const Quadruple& 
 
 std::optional<Ball_coordinates> ball_coordinates_of(const Quadruple& q, Root root) {
   const Nearest_rounding_guard nearest;
-  const Quadruple_line<Ball> line = quadruple_line<Ball>(q.sites, Ball_pivot{});
+  const Quadruple_line<Ball> line = quadruple_line<Ball>(q.sites, Pivot_exact_where_uncertain{});
   if (line.pivot < 0) return std::nullopt;
   return coordinates_of_root(line, root);
 }
 
 std::optional<Quadruple_vertices> vertices_from_balls(const Quadruple& q) {
   const Nearest_rounding_guard nearest;
-  const Quadruple_line<Ball> line = quadruple_line<Ball>(q.sites, Ball_pivot{});
+  const Quadruple_line<Ball> line = quadruple_line<Ball>(q.sites, Pivot_exact_where_uncertain{});
   Quadruple_vertices result;
   if (line.pivot < 0) {  // every n_k is exactly 0
     result.rank_deficient = true;

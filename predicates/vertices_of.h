@@ -53,11 +53,12 @@ struct Vertices_of_predicate {
   static constexpr const char* name = "vertices_of";
 
   // The line's polynomials in doubles with an a priori bound, the rest with running bounds: a fraction of
-  // the cost of intervals, and certain as often.
+  // the cost of intervals, and certain as often; the pivot's zeros exactly (exact_quadruple_line.h).
   static std::optional<Quadruple_vertices> static_filter(const Quadruple& q) {
     try {
       const auto bounded = [](const Double_with_magnitude& x) { return with_error(x); };
-      return vertices_on_line(converted_line<Double_with_error>(quadruple_line<Double_with_magnitude>(q.sites), bounded), q);
+      return vertices_on_line(
+          converted_line<Double_with_error>(quadruple_line<Double_with_magnitude>(q.sites, Pivot_exact_where_uncertain{}), bounded), q);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
