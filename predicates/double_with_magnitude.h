@@ -57,14 +57,14 @@ inline Double_with_magnitude operator*(const Double_with_magnitude& a, const Dou
   return {a.value * b.value, a.magnitude * b.magnitude + Double_with_magnitude::kUnderflow};
 }
 
-// The sign of every number within the bound, or Uncertain_sign (never ZERO; NaN and infinity included).
-inline Sign certain_sign(const Double_with_magnitude& x) {
-  if (!(std::fabs(x.value) > x.error_bound())) throw Uncertain_sign();
-  return x.value > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
-}
-
 // Whether every number within the bound is nonzero (no exception: for the pivot rule of exact_quadruple_line.h).
 inline bool certainly_nonzero(const Double_with_magnitude& x) { return std::fabs(x.value) > x.error_bound(); }
+
+// The sign of every number within the bound, or Uncertain_sign (never ZERO; NaN and infinity included).
+inline Sign certain_sign(const Double_with_magnitude& x) {
+  if (!certainly_nonzero(x)) throw Uncertain_sign();
+  return x.value > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
+}
 
 // The same number with a running bound, for the operations that follow.
 inline Double_with_error with_error(const Double_with_magnitude& x) { return {x.value, x.error_bound()}; }

@@ -31,10 +31,7 @@ std::optional<Quadruple_line<Exact>> line_from_point_minors(const std::array<Sit
   return exact;
 }
 
-}  // namespace
-
-namespace {
-
+// The minor n_k is (+-) of, from the site differences alone.
 template <class NT>
 NT null_vector_minor(const std::array<Site, 4>& sites, int k) {
   std::array<std::array<NT, 3>, 3> rows;

@@ -88,7 +88,8 @@ struct Vertex_in_box_predicate {
   }
 
   // The same on the vertex's balls (vertex_ball.h): vertices a few ulps from a bound (sites one ulp off a
-  // lattice, whose planes the dyadic boxes share).
+  // lattice, whose planes the dyadic boxes share). A ball never shows a vertex on a bound, so closed_above
+  // does not enter.
   static std::optional<bool> ball_stage(const Vertex& v, const Axis_box& box, const std::array<bool, 3>&) {
     const Ball_coordinates* X = v.ball_coordinates();
     if (X == nullptr) return std::nullopt;

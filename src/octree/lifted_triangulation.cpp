@@ -61,12 +61,9 @@ Lifted_triangulation triangulation_with(const std::vector<Site>& sites, const st
   result.sites = subset;
   std::sort(result.sites.begin(), result.sites.end());
   result.neighbours.resize(result.sites.size());
-  const auto position = [&](Site_index s) {
-    return static_cast<std::size_t>(std::lower_bound(result.sites.begin(), result.sites.end(), s) - result.sites.begin());
-  };
   std::vector<bool> placed(result.sites.size(), false);
   for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end(); ++v) {
-    v->data().position = position(static_cast<Site_index>(v->data().index));
+    v->data().position = result.position_of(static_cast<Site_index>(v->data().index));
     placed[v->data().position] = true;
   }
   for (std::size_t i = 0; i < placed.size(); ++i)
