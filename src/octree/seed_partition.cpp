@@ -17,6 +17,13 @@ constexpr double kWeightScaleLimit = 16;
 // overflow; the cube side stays above 2^-40 times the extent of the sites.
 constexpr double kLargestIndex = 0x1p50;
 constexpr double kFinestRelativeSide = 0x1p-40;
+// The grid is offset from the multiples of s by kOffsetFraction s, an odd multiple of 2^-10 away from the
+// simple fractions: a lattice input (integer or dyadic centres) would otherwise put its bisector planes
+// and vertices on the faces of boxes of the first levels, where vertex_in_box has only its exact stage
+// to decide. Bounds stay exact while |k| 2^l 2^10 < 2^53, so the offset is used below kLargestOffsetIndex,
+// and below the tenth level of refinement the grid holds no more bits than it did without the offset.
+constexpr double kOffsetFraction = 379.0 / 1024;
+constexpr double kLargestOffsetIndex = 0x1p40;
 
 // Floor and ceiling division by 2 of possibly negative integers.
 std::int64_t floor_half(std::int64_t k) { return k >= 0 ? k / 2 : -((-k + 1) / 2); }
@@ -55,21 +62,46 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
     w_lo = std::min(w_lo, sites[i].w), w_hi = std::max(w_hi, sites[i].w);
   }
   const double side = cube_side(lo, hi, active.size());
+  build_levels(lo, hi, side, w_hi - w_lo, far_field_scale);
+  // The offset needs ten bits below s on top of the largest index of the first build, which the second
+  // exceeds by a cube of each level at most.
+  double largest_index = 0;
+  for (int a = 0; a < 3; ++a)
+    largest_index = std::max({largest_index, std::fabs(root_box_.lo[a]) / side, std::fabs(root_box_.hi[a]) / side});
+  if (largest_index < kLargestOffsetIndex) {
+    offset_ = kOffsetFraction * side;
+    build_levels(lo, hi, side, w_hi - w_lo, far_field_scale);
+  }
 
-  // Level 0: every centre strictly inside (ceil(lo / s) - 1 < lo / s), bounds even for level 1.
+  level_offset_.push_back(0);
+  for (const Level& l : levels_) {
+    std::size_t count = 1;
+    for (int a = 0; a < 3; ++a) count *= static_cast<std::size_t>(l.hi[a] - l.lo[a]);
+    level_offset_.push_back(level_offset_.back() + count);
+  }
+}
+
+void Seed_partition::build_levels(const std::array<double, 3>& lo, const std::array<double, 3>& hi, double side,
+                                  double weight_range, double far_field_scale) {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  levels_.clear();
+  unit_.clear();
+  // Level 0: every centre strictly inside, bounds even for level 1.
   Level g;
   for (int a = 0; a < 3; ++a) {
-    g.lo[a] = static_cast<std::int64_t>(std::ceil(lo[a] / side)) - 1;
-    g.hi[a] = static_cast<std::int64_t>(std::floor(hi[a] / side)) + 1;
-    g.lo[a] = 2 * floor_half(g.lo[a]);
-    g.hi[a] = 2 * ceil_half(g.hi[a]);
+    g.lo[a] = 2 * floor_half(static_cast<std::int64_t>(std::ceil(lo[a] / side)) - 1);
+    g.hi[a] = 2 * ceil_half(static_cast<std::int64_t>(std::floor(hi[a] / side)) + 1);
+    // Without the offset the bounds are strict already (ceil(lo / s) - 1 < lo / s); with it, one more cube
+    // of level 1 at most.
+    while (!(bound(side, g.lo[a]) < lo[a])) g.lo[a] -= 2;
+    while (!(hi[a] < bound(side, g.hi[a]))) g.hi[a] += 2;
   }
   levels_.push_back(g);
   unit_.push_back(side);
   Axis_box grid_box;  // G
   for (int a = 0; a < 3; ++a) {
-    grid_box.lo[a] = static_cast<double>(g.lo[a]) * side;
-    grid_box.hi[a] = static_cast<double>(g.hi[a]) * side;
+    grid_box.lo[a] = bound(side, g.lo[a]);
+    grid_box.hi[a] = bound(side, g.hi[a]);
     origin_[a] = grid_box.lo[a] + (grid_box.hi[a] - grid_box.lo[a]) / 2;
   }
   double half_extent = 0;
@@ -79,7 +111,7 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
   // with a factor 2 only sizes R): R grows for the weights' range up to kWeightScaleLimit times the least
   // radius, beyond which the far field's patches decide.
   const double minimum = 2 * far_field_scale * half_extent;
-  const double for_weights = 2 * (std::sqrt(3.0) * half_extent + (w_hi - w_lo));
+  const double for_weights = 2 * (std::sqrt(3.0) * half_extent + weight_range);
   const double needed = std::isfinite(for_weights) && for_weights <= kWeightScaleLimit * minimum
                             ? std::max(minimum, for_weights)
                             : minimum;
@@ -91,8 +123,8 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
     const double unit = unit_.back();
     double radius = kInfinity;
     for (int a = 0; a < 3; ++a) {
-      root_box_.lo[a] = static_cast<double>(inner.lo[a]) * unit;
-      root_box_.hi[a] = static_cast<double>(inner.hi[a]) * unit;
+      root_box_.lo[a] = bound(unit, inner.lo[a]);
+      root_box_.hi[a] = bound(unit, inner.hi[a]);
       radius = std::min({radius, origin_[a] - root_box_.lo[a], root_box_.hi[a] - origin_[a]});
     }
     if (!std::isfinite(radius) || !std::isfinite(2 * unit))
@@ -108,13 +140,6 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
     }
     levels_.push_back(outer);
     unit_.push_back(2 * unit);
-  }
-
-  level_offset_.push_back(0);
-  for (const Level& l : levels_) {
-    std::size_t count = 1;
-    for (int a = 0; a < 3; ++a) count *= static_cast<std::size_t>(l.hi[a] - l.lo[a]);
-    level_offset_.push_back(level_offset_.back() + count);
   }
 }
 
@@ -164,8 +189,8 @@ Axis_box Seed_partition::box(std::size_t id) const {
   const Index3 k = index_of(id, level);
   Axis_box b;
   for (int a = 0; a < 3; ++a) {
-    b.lo[a] = static_cast<double>(k[a]) * unit_[level];
-    b.hi[a] = static_cast<double>(k[a] + 1) * unit_[level];
+    b.lo[a] = bound(unit_[level], k[a]);
+    b.hi[a] = bound(unit_[level], k[a] + 1);
   }
   return b;
 }
@@ -204,10 +229,11 @@ std::size_t Seed_partition::home(const Site& s) const {
   const double c[3] = {s.x, s.y, s.z};
   Index3 k;
   for (int a = 0; a < 3; ++a) {
-    // c / unit is exact (unit is a power of two) unless it underflows: a negative c that tiny gives -0,
-    // whose floor 0 names the cube above c; k unit is exact, so the comparison repairs it.
-    k[a] = static_cast<std::int64_t>(std::floor(c[a] / unit_[0]));
-    if (static_cast<double>(k[a]) * unit_[0] > c[a]) --k[a];
+    // (c - offset) / unit is rounded (and a negative one that tiny underflows to -0, whose floor names
+    // the cube above c); the bounds are exact and increasing in k, so comparing with them repairs it.
+    k[a] = static_cast<std::int64_t>(std::floor((c[a] - offset_) / unit_[0]));
+    while (bound(unit_[0], k[a]) > c[a]) --k[a];
+    while (!(c[a] < bound(unit_[0], k[a] + 1))) ++k[a];
   }
   return id_of(0, k);
 }

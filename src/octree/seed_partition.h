@@ -3,8 +3,9 @@
 //  - level 0 is the box G of the site centres, cut into cubes of side s = 2^e (about one site per cube);
 //  - level l >= 1 is a shell of cubes of side 2^l s around level l - 1, one or two cubes thick;
 //  - the outer boundary of the last level L is R.
-// Every bound is k 2^l s for an integer k, an exact double, so that adjacent boxes share their bounds
-// exactly and every box of the octree below them is a dyadic box as well.
+// Every bound is k 2^l s + offset for an integer k, an exact double (the offset is a fixed fraction of s
+// with ten bits, or 0: seed_partition.cpp), so that adjacent boxes share their bounds exactly and every
+// box of the octree below them is a dyadic box of that grid as well.
 #pragma once
 
 #include <array>
@@ -42,6 +43,8 @@ class Seed_partition {
   bool touches_root_boundary(std::size_t id) const;
 
   const Axis_box& root_box() const { return root_box_; }
+  // Every bound is k 2^l s + grid_offset() for an integer k.
+  double grid_offset() const { return offset_; }
   // The centre of G and the radius of the ball about it that R contains.
   const std::array<double, 3>& origin() const { return origin_; }
   double root_radius() const { return root_radius_; }
@@ -52,6 +55,10 @@ class Seed_partition {
     Index3 lo, hi;  // cube index range [lo, hi) per axis, in units of 2^l s
   };
 
+  // Levels, root box, origin and radius for the current offset_.
+  void build_levels(const std::array<double, 3>& lo, const std::array<double, 3>& hi, double side,
+                    double weight_range, double far_field_scale);
+  double bound(double unit, std::int64_t k) const { return static_cast<double>(k) * unit + offset_; }
   std::size_t id_of(int level, const Index3& k) const;
   Index3 index_of(std::size_t id, int& level) const;
   bool in_range(int level, const Index3& k) const;
@@ -63,6 +70,7 @@ class Seed_partition {
   Axis_box root_box_;
   std::array<double, 3> origin_;
   double root_radius_ = 0;
+  double offset_ = 0;
 };
 
 }  // namespace apollonius
