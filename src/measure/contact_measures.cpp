@@ -24,7 +24,7 @@ namespace {
 // that meet have centres at most that far apart, so in neighbouring grid cells.
 class Ball_grid {
  public:
-  Ball_grid(const std::vector<Site>& sites, const std::vector<Site_index>& members, double probe) : sites_(sites) {
+  Ball_grid(const std::vector<Site>& sites, const std::vector<Site_index>& members, double probe) {
     double largest = 0;
     for (Site_index i : members) largest = std::max(largest, sites[i].w + probe);
     side_ = 2 * largest;
@@ -67,7 +67,6 @@ class Ball_grid {
     return k;
   }
 
-  const std::vector<Site>& sites_;
   double side_ = 0;
   std::unordered_map<std::uint64_t, std::vector<Site_index>> cells_;  // by key(): one entry per grid cell
 };
