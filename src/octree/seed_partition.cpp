@@ -8,8 +8,10 @@
 namespace apollonius {
 namespace {
 
-// About this many level-0 cubes per active site: fewer cubes start with more candidates each.
-constexpr double kCubesPerSite = 1;
+// At least this many level-0 cubes per active site (and fewer than 8 times as many): fewer cubes start
+// with more candidates each, and the refinement makes up for them at less cost than propagation over more
+// (docs/benchmarks.md, "The seed grid off the input's grid").
+constexpr double kCubesPerSite = 0.25;
 // The root box grows for the weights' range up to this many times its least radius (16 times 4 half-extents:
 // the radius of far_field_scale 32, which every input got before 2026-11-28).
 constexpr double kWeightScaleLimit = 16;
@@ -30,7 +32,7 @@ std::int64_t floor_half(std::int64_t k) { return k >= 0 ? k / 2 : -((-k + 1) / 2
 std::int64_t ceil_half(std::int64_t k) { return -floor_half(-k); }
 
 // The side s = 2^e of the level-0 cubes: halved from the first power of two covering the extent until
-// there are about kCubesPerSite cubes per site.
+// there are at least kCubesPerSite cubes per site.
 double cube_side(const std::array<double, 3>& lo, const std::array<double, 3>& hi, std::size_t site_count) {
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   double largest = 0;

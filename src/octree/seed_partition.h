@@ -1,6 +1,6 @@
 // The seed boxes of the octree (paper section 5.2.1: "initially, we partition the bounding box into a set
 // of cubes"), extended to a root box R far larger than the sites:
-//  - level 0 is the box G of the site centres, cut into cubes of side s = 2^e (about one site per cube);
+//  - level 0 is the box G of the site centres, cut into cubes of side s = 2^e (a quarter to two cubes per site);
 //  - level l >= 1 is a shell of cubes of side 2^l s around level l - 1, one or two cubes thick;
 //  - the outer boundary of the last level L is R.
 // Every bound is k 2^l s + offset for an integer k, an exact double (the offset is a fixed fraction of s
