@@ -13,8 +13,8 @@ namespace {
 
 // A box with at most this many candidates is decided (the paper: four; see box_refinement.h).
 constexpr std::size_t kLeafCandidates = 6;
-// The quadruple cache holds at most about this many quadruples (each up to two vertices, ~0.5 KB): about
-// 1 MB, which stays in a core's cache; larger caches recompute less but run slower (docs/benchmarks.md).
+// The quadruple cache holds at most about this many quadruples before each leaf (each up to two vertices,
+// ~0.5 KB), and C(kStagnantCandidates, 4) more within it: about 1 MB, which stays in a core's cache; larger caches recompute less but run slower (docs/benchmarks.md).
 constexpr std::size_t kCachedQuadruples = 2048;
 // Each candidate is tested against this many of the best candidates at the box centre.
 constexpr std::size_t kWitnesses = 4;
@@ -299,6 +299,8 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
   const std::size_t k = stack_.size() - first, leaf_start = out.size();
   ++counts_.leaves;
   counts_.leaf_candidates += k;
+  // The bound holds within a seed box too: one around a tie of many sites meets millions of quadruples.
+  cache_.limit(kCachedQuadruples);
   // Sorted once, so that every quadruple below comes out sorted.
   std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
   const Site_index* leaf = stack_.data() + first;
