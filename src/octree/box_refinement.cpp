@@ -14,7 +14,8 @@ namespace {
 // A box with at most this many candidates is decided (the paper: four; see box_refinement.h).
 constexpr std::size_t kLeafCandidates = 6;
 // The quadruple cache holds at most about this many quadruples before each leaf (each up to two vertices,
-// ~0.5 KB), and C(kStagnantCandidates, 4) more within it: about 1 MB, which stays in a core's cache; larger caches recompute less but run slower (docs/benchmarks.md).
+// ~0.5 KB), and C(kStagnantCandidates, 4) more within it: about 1 MB, which stays in a core's cache; larger
+// caches recompute less but run slower (docs/benchmarks.md).
 constexpr std::size_t kCachedQuadruples = 2048;
 // Each candidate is tested against this many of the best candidates at the box centre.
 constexpr std::size_t kWitnesses = 4;

@@ -79,7 +79,8 @@ std::size_t homes_missing_their_centre(const std::vector<Site>& sites, const std
 }
 
 struct Totals {
-  std::size_t partitions = 0, offset_grids = 0, boxes = 0, neighbour_pairs = 0, boundary_boxes = 0, homes = 0, homes_of_underflow = 0;
+  std::size_t partitions = 0, offset_grids = 0, boxes = 0, neighbour_pairs = 0, boundary_boxes = 0, homes = 0,
+              homes_of_underflow = 0;
 };
 
 // Checks every documented property of the partition of `sites` (restricted to `active`).
@@ -239,14 +240,27 @@ TEST_CASE("seed boxes tile the root box, neighbours share faces, homes are fines
       }
     }
   }
-  MESSAGE(totals.partitions, " partitions (", totals.offset_grids, " with an offset grid), ", totals.boxes, " boxes, ", totals.neighbour_pairs,
-          " neighbour pairs, ", totals.boundary_boxes, " boxes on the root boundary, ", totals.homes,
-          " homes checked, ", totals.homes_of_underflow, " of them where the quotient underflows");
+  {  // A cluster 2^45 times its size away from the origin: its indices leave no ten bits for the offset.
+    std::vector<Site> far_cluster;
+    for (int k = 0; k < 8; ++k)
+      far_cluster.push_back({0x1p45 + (k & 1), 0x1p45 + (k >> 1 & 1), -0x1p45 + (k >> 2 & 1), 0.25 * (1 + k % 3)});
+    std::vector<Site_index> all(far_cluster.size());
+    std::iota(all.begin(), all.end(), Site_index{0});
+    INFO("a unit cluster at 2^45");
+    const std::size_t offset_before = totals.offset_grids;
+    check_partition(far_cluster, all, kOctreeFarFieldScale, totals);
+    ++expected_partitions;
+    CHECK(totals.offset_grids == offset_before);
+  }
+  MESSAGE(totals.partitions, " partitions (", totals.offset_grids, " with an offset grid), ", totals.boxes,
+          " boxes, ", totals.neighbour_pairs, " neighbour pairs, ", totals.boundary_boxes,
+          " boxes on the root boundary, ", totals.homes, " homes checked, ", totals.homes_of_underflow,
+          " of them where the quotient underflows");
   CHECK(totals.partitions == expected_partitions);
   CHECK(totals.partitions >= std::size(kSiteFamilies) * 4 * 2 * 2);
   CHECK(totals.homes_of_underflow > 0);  // the regression's case occurs in the families
-  // The offset is dropped only where indices are large (wide-range and scaled families as given).
-  CHECK(totals.offset_grids * 10 >= totals.partitions * 8);
+  // The offset is dropped only where indices are large: of the families, none.
+  CHECK(totals.offset_grids + 1 == totals.partitions);
 }
 
 // Regression, found by this test: Seed_partition::home computed floor(c / s) for the cube side s, and the
