@@ -142,7 +142,6 @@ template <class Kernel>
 void Box_refinement<Kernel>::find_vertices(const Axis_box& box, const std::vector<Site_index>& candidates,
                                    std::vector<Found_vertex>& out) {
   stack_.assign(candidates.begin(), candidates.end());
-  cache_.limit(kCachedQuadruples);
   refine(box, 0, 0, 0, out);
 }
 
