@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "predicates/number_types.h"
 #include "predicates/unit_roundoff.h"
@@ -57,10 +58,16 @@ inline Double_with_error sqrt(const Double_with_error& a) {
   return {z, a.error / z * (1 + 4 * kUnitRoundoff) + kUnitRoundoff * z + Double_with_error::kUnderflow};
 }
 
-// The sign of every number within the bound, or Uncertain_sign (never ZERO: every operation rounds).
-inline Sign certain_sign(const Double_with_error& x) {
-  if (!(std::fabs(x.value) > x.error * Double_with_error::kChain)) throw Uncertain_sign();  // NaN included
+// The sign of every number within the bound, or nothing (never ZERO: every operation rounds; NaN included).
+inline std::optional<Sign> sign_if_certain(const Double_with_error& x) {
+  if (!(std::fabs(x.value) > x.error * Double_with_error::kChain)) return std::nullopt;
   return x.value > 0 ? Sign::POSITIVE : Sign::NEGATIVE;
+}
+
+// The same, or Uncertain_sign.
+inline Sign certain_sign(const Double_with_error& x) {
+  if (const std::optional<Sign> s = sign_if_certain(x)) return *s;
+  throw Uncertain_sign();
 }
 
 // An interval holding every number within the bound, valid in any rounding mode: the margin 2u |value|

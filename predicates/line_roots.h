@@ -4,6 +4,7 @@
 
 #include <boost/container/static_vector.hpp>
 #include <cmath>
+#include <optional>
 
 #include "predicates/vertex.h"
 
@@ -17,31 +18,42 @@ struct Line_roots {
   boost::container::static_vector<Line_root<NT>, 2> roots;  // in the order MINUS, PLUS, or one SINGLE
 };
 
+// The root lambda = (a + b sqrt d) / denominator over a positive denominator, whose sign is known.
 template <class NT>
-Root_number<NT> positive_denominator(NT a, NT b, NT d, NT denominator) {
-  if (certain_sign(denominator) == Sign::NEGATIVE) return {-a, -b, d, -denominator};
+Root_number<NT> positive_denominator(NT a, NT b, NT d, NT denominator, Sign denominator_sign) {
+  if (denominator_sign == Sign::NEGATIVE) return {-a, -b, d, -denominator};
   return {a, b, d, denominator};
 }
 
-// Precondition: line.pivot >= 0.
+// Precondition: line.pivot >= 0. Nothing when a sign it needs is uncertain (filter number types only):
+// most quadruples a filter leaves undecided fail here, and an exception cost more than the filter.
 template <class NT>
-Line_roots<NT> line_roots(const Quadruple_line<NT>& line) {
+std::optional<Line_roots<NT>> line_roots(const Quadruple_line<NT>& line) {
   Line_roots<NT> result;
   const NT zero(0);
-  if (certain_sign(line.A) != Sign::ZERO) {
-    const Sign s = certain_sign(line.discriminant);
-    if (s == Sign::ZERO) {
-      result.roots.push_back({Root::SINGLE, positive_denominator(-line.B, zero, zero, line.A)});
-    } else if (s == Sign::POSITIVE) {
+  const std::optional<Sign> a = sign_if_certain(line.A);
+  if (!a) return std::nullopt;
+  if (*a != Sign::ZERO) {
+    const std::optional<Sign> s = sign_if_certain(line.discriminant);
+    if (!s) return std::nullopt;
+    if (*s == Sign::ZERO) {
+      result.roots.push_back({Root::SINGLE, positive_denominator(-line.B, zero, zero, line.A, *a)});
+    } else if (*s == Sign::POSITIVE) {
       for (Root r : {Root::MINUS, Root::PLUS})
         result.roots.push_back(
-            {r, positive_denominator(-line.B, NT(static_cast<int>(r)), line.discriminant, line.A)});
+            {r, positive_denominator(-line.B, NT(static_cast<int>(r)), line.discriminant, line.A, *a)});
     }
-  } else if (certain_sign(line.B) != Sign::ZERO) {
-    result.roots.push_back({Root::SINGLE, positive_denominator(-line.C, zero, zero, NT(2) * line.B)});
-  } else {
-    result.whole_line_on_cone = certain_sign(line.C) == Sign::ZERO;
+    return result;
   }
+  const std::optional<Sign> b = sign_if_certain(line.B);
+  if (!b) return std::nullopt;
+  if (*b != Sign::ZERO) {
+    result.roots.push_back({Root::SINGLE, positive_denominator(-line.C, zero, zero, NT(2) * line.B, *b)});
+    return result;
+  }
+  const std::optional<Sign> c = sign_if_certain(line.C);
+  if (!c) return std::nullopt;
+  result.whole_line_on_cone = *c == Sign::ZERO;
   return result;
 }
 

@@ -42,6 +42,10 @@ inline Sign certain_sign(const Rational& x) { return static_cast<Sign>(CGAL::sig
 // The floating path (`--arith float`, no filter and no exact stage): the computed sign, taken as it is.
 inline Sign certain_sign(double x) { return x > 0 ? Sign::POSITIVE : x < 0 ? Sign::NEGATIVE : Sign::ZERO; }
 
+// Exact and floating signs are always certain: so that one template serves every stage.
+inline std::optional<Sign> sign_if_certain(const Exact& x) { return certain_sign(x); }
+inline std::optional<Sign> sign_if_certain(double x) { return certain_sign(x); }
+
 // The integer z as an Exact. CGAL 5.5's Mpzf(const Gmpz&) drops the sign (it sizes the number by
 // mpz_size, the magnitude's) and mishandles 0 (mpz_scan1 finds no bit): use this instead.
 Exact exact_integer(const CGAL::Gmpz& z);

@@ -103,7 +103,8 @@ const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const {
   return exact_.get_or_compute([&] {
     const Quadruple_line<Exact> line = exact_quadruple_line(quadruple_.sites);
     if (line.pivot >= 0) {
-      for (const Line_root<Exact>& r : line_roots(line).roots)
+      const Line_roots<Exact> roots = *line_roots(line);  // Exact signs are always certain
+      for (const Line_root<Exact>& r : roots.roots)
         if (r.root == root_) return coordinates_on_line(line, r.lambda);
     }
     throw std::logic_error("vertex root vanished in exact recomputation");

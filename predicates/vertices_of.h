@@ -57,7 +57,7 @@ struct Vertices_of_predicate {
   static std::optional<Quadruple_vertices> static_filter(const Quadruple& q) {
     try {
       const auto bounded = [](const Double_with_magnitude& x) { return with_error(x); };
-      return vertices_on_line(
+      return vertices_on_line_if_certain(
           converted_line<Double_with_error>(quadruple_line<Double_with_magnitude>(q.sites, Pivot_exact_where_uncertain{}), bounded), q);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
@@ -69,12 +69,13 @@ struct Vertices_of_predicate {
   // overflow or underflow and only the exact stage, with thousands of bits, decided.
   static std::optional<Quadruple_vertices> interval_stage(const Quadruple& q) {
     try {
-      return evaluate<Interval>(q);
+      if (std::optional<Quadruple_vertices> certain = vertices_on_line_if_certain(quadruple_line<Interval>(q.sites), q))
+        return certain;
     } catch (const Uncertain_sign&) {
     }
     if (!may_leave_double_range(q)) return std::nullopt;
     try {
-      return evaluate<Wide_interval>(q);
+      return vertices_on_line_if_certain(quadruple_line<Wide_interval>(q.sites), q);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
@@ -96,22 +97,29 @@ struct Vertices_of_predicate {
   // polynomials cancel beyond what intervals tell; not where A or the discriminant may vanish.
   static std::optional<Quadruple_vertices> ball_stage(const Quadruple& q) { return vertices_from_balls(q); }
 
+  // Throws Uncertain_sign where a filter number type is not certain.
   template <class NT>
   static Quadruple_vertices evaluate(const Quadruple& q) {
-    if constexpr (std::is_same_v<NT, Exact>) return vertices_on_line(exact_quadruple_line(q.sites), q);
-    else return vertices_on_line(quadruple_line<NT>(q.sites), q);
+    std::optional<Quadruple_vertices> result;
+    if constexpr (std::is_same_v<NT, Exact>) result = vertices_on_line_if_certain(exact_quadruple_line(q.sites), q);
+    else result = vertices_on_line_if_certain(quadruple_line<NT>(q.sites), q);
+    if (!result) throw Uncertain_sign();
+    return *std::move(result);
   }
 
+  // Nothing where the roots' signs are uncertain, the usual failure; the rarer ones after them throw.
   template <class NT>
-  static Quadruple_vertices vertices_on_line(const Quadruple_line<NT>& line, const Quadruple& q) {
+  static std::optional<Quadruple_vertices> vertices_on_line_if_certain(const Quadruple_line<NT>& line,
+                                                                       const Quadruple& q) {
     Quadruple_vertices result;
     if (line.pivot < 0) {
       result.rank_deficient = true;
       return result;
     }
-    const Line_roots<NT> roots = line_roots(line);
-    result.equidistant_curve = roots.whole_line_on_cone;
-    for (const Line_root<NT>& root : roots.roots) {
+    const std::optional<Line_roots<NT>> roots = line_roots(line);
+    if (!roots) return std::nullopt;
+    result.equidistant_curve = roots->whole_line_on_cone;
+    for (const Line_root<NT>& root : roots->roots) {
       Vertex_coordinates<NT> X = coordinates_on_line(line, root.lambda);
       if (is_valid_root(X, q)) result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
     }

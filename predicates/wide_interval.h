@@ -51,6 +51,7 @@ class Wide_interval {
     const long e = odd ? x.exponent_ - 1 : x.exponent_;
     return Wide_interval(CGAL::sqrt(m), e / 2);
   }
+  friend std::optional<Sign> sign_if_certain(const Wide_interval& x) { return sign_if_certain(x.mantissa_); }
   friend Sign certain_sign(const Wide_interval& x) { return certain_sign(x.mantissa_); }
 
  private:

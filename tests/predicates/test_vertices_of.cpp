@@ -312,3 +312,37 @@ TEST_CASE("Double_with_magnitude: the depths of quadruple_line's values are thos
   CHECK(line.discriminant.depth == 52);
   CHECK(kQuadrupleLineDepth == 52);  // the deepest, which every bound uses
 }
+
+TEST_CASE("line_roots answers nothing, not a guess, where a filter's sign of A, B, C or the discriminant is uncertain") {
+  Rounding_guard guard;
+  const Interval straddling(-1, 1), positive(1, 2), negative(-2, -1), zero(0);
+  const auto line_with = [&](Interval A, Interval B, Interval C, Interval discriminant) {
+    Quadruple_line<Interval> line;
+    line.pivot = 3;
+    line.A = A, line.B = B, line.C = C, line.discriminant = discriminant;
+    return line;
+  };
+  CHECK_FALSE(line_roots(line_with(straddling, positive, positive, positive)).has_value());
+  CHECK_FALSE(line_roots(line_with(positive, positive, positive, straddling)).has_value());
+  CHECK_FALSE(line_roots(line_with(zero, straddling, positive, positive)).has_value());
+  CHECK_FALSE(line_roots(line_with(zero, zero, straddling, positive)).has_value());
+  // Certain signs: two roots over a positive denominator, however A's sign was; one root from B; a ray.
+  const std::optional<Line_roots<Interval>> two = line_roots(line_with(negative, positive, positive, positive));
+  REQUIRE(two.has_value());
+  REQUIRE(two->roots.size() == 2);
+  for (const Line_root<Interval>& r : two->roots) CHECK(r.lambda.denominator.inf() > 0);
+  CHECK(line_roots(line_with(positive, positive, positive, negative))->roots.empty());
+  const std::optional<Line_roots<Interval>> one = line_roots(line_with(zero, negative, positive, positive));
+  REQUIRE(one.has_value());
+  REQUIRE(one->roots.size() == 1);
+  CHECK(one->roots[0].root == Root::SINGLE);
+  CHECK(one->roots[0].lambda.denominator.inf() > 0);
+  CHECK(line_roots(line_with(zero, zero, zero, positive))->whole_line_on_cone);
+  CHECK_FALSE(line_roots(line_with(zero, zero, negative, positive))->whole_line_on_cone);
+  // Double_with_error: a value within its bound of 0 is uncertain.
+  Quadruple_line<Double_with_error> unsure;
+  unsure.pivot = 3;
+  unsure.A = Double_with_error(1e-20, 1e-19);
+  CHECK_FALSE(line_roots(unsure).has_value());
+  CHECK_THROWS_AS(certain_sign(unsure.A), Uncertain_sign);
+}
