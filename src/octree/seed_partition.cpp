@@ -10,7 +10,7 @@ namespace {
 
 // At least this many level-0 cubes per active site (and fewer than 8 times as many): fewer cubes start
 // with more candidates each, and the refinement makes up for them at less cost than propagation over more
-// (docs/benchmarks.md, "The seed grid off the input's grid").
+// (docs/benchmarks.md, "A quarter of a seed cube per site").
 constexpr double kCubesPerSite = 0.25;
 // The root box grows for the weights' range up to this many times its least radius (16 times 4 half-extents:
 // the radius of far_field_scale 32, which every input got before 2026-11-28).
