@@ -1,44 +1,74 @@
 #include "diagram/diagram.h"
 
 #include <algorithm>
-#include <numeric>
 
 #include "diagram/cancellable_steps.h"
 #include "predicates/kernels.h"
 
 namespace apollonius {
 
+namespace {
+
+// A vertex's place in the sort, compared without reaching the vertex for all but equal heads: every tie set
+// has four or more sites, so `head` starts the lexicographic order of the tie sets.
+struct Sort_key {
+  std::array<Site_index, 4> head;  // the tie set's first four sites
+  std::size_t tie_size;
+  std::size_t index;  // in the vertices being sorted
+};
+
+// Puts vertices[order[i]] at i for every i, moving each vertex once (one cycle of the permutation at a
+// time); `order` ends as the identity.
+void permute_in_place(std::vector<Diagram_vertex>& vertices, std::vector<std::size_t>& order, const Cancellation* cancellation) {
+  std::size_t moves = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (order[i] == i) continue;
+    Diagram_vertex held = std::move(vertices[i]);
+    std::size_t j = i;
+    while (order[j] != i) {
+      if (++moves % 4096 == 0) throw_if_cancelled(cancellation);
+      const std::size_t k = order[j];
+      vertices[j] = std::move(vertices[k]);
+      order[j] = j;
+      j = k;
+    }
+    vertices[j] = std::move(held);
+    order[j] = j;
+  }
+}
+
+}  // namespace
+
 template <class Kernel>
-Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
-                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices,
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden, std::vector<Diagram_vertex> vertices,
                          const Cancellation* cancellation) {
   Diagram diagram;
   diagram.site_count = site_count;
   diagram.hidden = std::move(hidden);
-  std::vector<std::array<double, 4>> rounded(vertices.size());
+  std::vector<Sort_key> keys(vertices.size());
   for (std::size_t k = 0; k < vertices.size(); ++k) {
     if (k % 1024 == 0) throw_if_cancelled(cancellation);
-    rounded[k] = Kernel::printed_coordinates(vertices[k].second);
+    Diagram_vertex& v = vertices[k];
+    v.rounded = Kernel::printed_coordinates(v.vertex);
+    keys[k] = {{v.tie_set[0], v.tie_set[1], v.tie_set[2], v.tie_set[3]}, v.tie_set.size(), k};
   }
-  // docs/contract.md orders lines by printed values; equal printed values fall back to the exact order.
-  // Sorted by index, then each vertex moved once: they are large, and one copy of them at a time is enough.
-  std::vector<std::size_t> order(vertices.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  cancellable_sort(order.begin(), order.end(), cancellation, [&](std::size_t a, std::size_t b) {
-    const std::vector<Site_index>&u = vertices[a].first, &v = vertices[b].first;
-    // One pass over the tie sets (lexicographic, a prefix first).
-    const auto [p, q] = std::mismatch(u.begin(), u.end(), v.begin(), v.end());
-    if (p != u.end() || q != v.end()) return q != v.end() && (p == u.end() || *p < *q);
-    if (rounded[a] != rounded[b]) return rounded[a] < rounded[b];
-    return Kernel::compare(vertices[a].second, vertices[b].second) == Sign::NEGATIVE;
+  // docs/contract.md orders lines by tie set (lexicographic, a prefix first), then by printed values; equal
+  // printed values fall back to the exact order.
+  cancellable_sort(keys.begin(), keys.end(), cancellation, [&](const Sort_key& a, const Sort_key& b) {
+    if (a.head != b.head) return a.head < b.head;
+    const Diagram_vertex &u = vertices[a.index], &v = vertices[b.index];
+    if (a.tie_size > 4 || b.tie_size > 4) {
+      const auto [p, q] = std::mismatch(u.tie_set.begin() + 4, u.tie_set.end(), v.tie_set.begin() + 4, v.tie_set.end());
+      if (p != u.tie_set.end() || q != v.tie_set.end()) return q != v.tie_set.end() && (p == u.tie_set.end() || *p < *q);
+    }
+    if (u.rounded != v.rounded) return u.rounded < v.rounded;
+    return Kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
   });
-  diagram.vertices.reserve(vertices.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i % 4096 == 0) throw_if_cancelled(cancellation);
-    const std::size_t k = order[i];
-    diagram.vertices.push_back(Diagram_vertex{std::move(vertices[k].first), std::move(vertices[k].second), rounded[k]});
-  }
-  std::vector<std::pair<std::vector<Site_index>, Vertex>>().swap(vertices);
+  std::vector<std::size_t> order(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].index;
+  std::vector<Sort_key>().swap(keys);
+  permute_in_place(vertices, order, cancellation);
+  diagram.vertices = std::move(vertices);
 
   std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);
   for (const Diagram_vertex& v : diagram.vertices)
@@ -49,11 +79,9 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   return diagram;
 }
 
-template Diagram assemble_diagram<Certified_kernel>(std::size_t, std::vector<Hidden_site>,
-                                                   std::vector<std::pair<std::vector<Site_index>, Vertex>>,
+template Diagram assemble_diagram<Certified_kernel>(std::size_t, std::vector<Hidden_site>, std::vector<Diagram_vertex>,
                                                    const Cancellation*);
-template Diagram assemble_diagram<Floating_kernel>(std::size_t, std::vector<Hidden_site>,
-                                                  std::vector<std::pair<std::vector<Site_index>, Vertex>>,
+template Diagram assemble_diagram<Floating_kernel>(std::size_t, std::vector<Hidden_site>, std::vector<Diagram_vertex>,
                                                   const Cancellation*);
 
 void restrict_to_box(Diagram& diagram, const Axis_box& box) {

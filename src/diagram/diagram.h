@@ -12,11 +12,12 @@
 
 namespace apollonius {
 
-// Invariant: tie_set is ascending, has 4 or more sites, and contains vertex.sites().
+// Invariant: tie_set is ascending, has 4 or more sites, and contains vertex.sites(). The algorithms make
+// these without `rounded`, and assemble_diagram sorts them where they lie: one copy of them at a time.
 struct Diagram_vertex {
-  std::vector<Site_index> tie_set;  // every site at the minimum weighted distance
-  Vertex vertex;                    // one defining quadruple of the tie set, and its root
-  std::array<double, 4> rounded;    // x, y, z, r: the correctly rounded doubles, for output only
+  std::vector<Site_index> tie_set;   // every site at the minimum weighted distance
+  Vertex vertex;                     // one defining quadruple of the tie set, and its root
+  std::array<double, 4> rounded{};  // x, y, z, r: the correctly rounded doubles, for output only (set by assemble_diagram)
 };
 
 // A site whose cell has no interior: inside (or tangent inside) the ball of hidden_by, or an exact
@@ -39,12 +40,11 @@ struct Diagram {
 // Keeps only the vertices whose centre lies in the closed box (exact).
 void restrict_to_box(Diagram& diagram, const Axis_box& box);
 
-// Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
-// Kernel: kernels.h (the certified one, unless for the floating path). Checks cancellation
-// (cancellation.h) while rounding.
+// Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram,
+// sorting them in place. Kernel: kernels.h (the certified one, unless for the floating path). Checks
+// cancellation (cancellation.h) while rounding.
 template <class Kernel>
-Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
-                         std::vector<std::pair<std::vector<Site_index>, Vertex>> vertices,
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden, std::vector<Diagram_vertex> vertices,
                          const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -308,8 +308,8 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
   const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
     unsigned skipped = 0;
     for (const Found_vertex& decided : decided_here_)
-      if (std::includes(decided.first.begin(), decided.first.end(), quadruple.begin(), quadruple.end()))
-        skipped |= 1u << root_equal_to<Kernel>(decided.second, roots);
+      if (std::includes(decided.tie_set.begin(), decided.tie_set.end(), quadruple.begin(), quadruple.end()))
+        skipped |= 1u << root_equal_to<Kernel>(decided.vertex, roots);
     keep_roots_in_box(quadruple, roots, skipped, box, leaf, k, leaf_start, out, true);
   };
   for (std::size_t a = 0; a < k; ++a)

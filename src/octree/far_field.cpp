@@ -409,11 +409,11 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   // A vertex with five or more tied sites is found from several of their quadruples: kept once.
   std::vector<Found_vertex> vertices;
   move_concatenated(found, vertices, cancellation);
-  cancellable_stable_sort(vertices.begin(), vertices.end(), cancellation, [](const Found_vertex& x, const Found_vertex& y) { return x.first < y.first; });
+  cancellable_stable_sort(vertices.begin(), vertices.end(), cancellation, [](const Found_vertex& x, const Found_vertex& y) { return x.tie_set < y.tie_set; });
   std::vector<Found_vertex> unique;
   for (std::size_t i = 0; i < vertices.size();) {
     std::size_t end = i;
-    while (end < vertices.size() && vertices[end].first == vertices[i].first) ++end;
+    while (end < vertices.size() && vertices[end].tie_set == vertices[i].tie_set) ++end;
     const std::size_t group = unique.size();
     for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
     i = end;

@@ -28,7 +28,7 @@ bool tie_set_among(const Vertex& v, const std::vector<Site>& sites, const std::v
 template <class Kernel>
 void append_unique(std::vector<Found_vertex>& out, std::size_t first, Found_vertex found) {
   const bool seen = std::any_of(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [&](const Found_vertex& f) {
-    return f.first == found.first && Kernel::compare(f.second, found.second) == Sign::ZERO;
+    return f.tie_set == found.tie_set && Kernel::compare(f.vertex, found.vertex) == Sign::ZERO;
   });
   if (!seen) out.push_back(std::move(found));
 }

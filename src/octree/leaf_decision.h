@@ -7,12 +7,13 @@
 #include <utility>
 #include <vector>
 
+#include "diagram/diagram.h"
 #include "predicates/vertex.h"
 
 namespace apollonius {
 
-// A vertex with its tie set (ascending).
-using Found_vertex = std::pair<std::vector<Site_index>, Vertex>;
+// A vertex with its tie set (ascending), not yet rounded: the very element of the diagram it goes to.
+using Found_vertex = Diagram_vertex;
 
 // Appends every vertex of a quadruple of `candidates` for which `located` holds and no site of `owners` is
 // strictly closer, with its tie set among `candidates` and `owners`. `owners` must contain every site that

@@ -29,6 +29,11 @@ namespace {
 // between G and R cost about R / G per face (docs/benchmarks.md, "the root box at twice G").
 constexpr double kFarFieldScale = 2;
 
+// Each thread's list of vertices starts with room for this many per site that it may meet: about the
+// expected number of Delaunay tetrahedra per point of a uniform random set in space (6.77). Room that is
+// never filled is address space, not memory: its pages are never touched.
+constexpr std::size_t kReservedVerticesPerSite = 7;
+
 // Seconds since the last call (or construction).
 class Lap_timer {
  public:
@@ -98,11 +103,18 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const Seed_partition partition(sites, active, kFarFieldScale);
   statistics.partition_seconds = timer.lap();
 
-  std::vector<std::vector<Found_vertex>> found;
-  std::vector<Found_vertex> vertices;
+  // Each thread's vertices, in no particular order (assemble_diagram sorts them): one list per seed would
+  // take one more copy of them all to gather.
+  const int threads = std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency());
+  tbb::enumerable_thread_specific<std::vector<Found_vertex>> found([&] {
+    std::vector<Found_vertex> list;
+    list.reserve(kReservedVerticesPerSite * active.size() / static_cast<std::size_t>(threads));
+    return list;
+  });
+  std::vector<std::vector<Found_vertex>> lists;
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
-  tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
+  tbb::task_arena arena(threads);
   arena.execute([&] {
     const std::vector<std::vector<Site_index>> candidates =
         propagate_candidates(sites, active, partition, Kernel::filter_slack, options.cancellation);
@@ -123,7 +135,6 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.seed_boxes = seeds.size();
     statistics.escaping_sites = escaping.size();
 
-    found.resize(seeds.size());
     tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation);
     std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
     if (options.regions != nullptr) {
@@ -148,7 +159,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       throw_if_cancelled(options.cancellation);
       Box_refinement<Kernel>& local = refinement.local();
       if (regions != nullptr) local.record_regions(regions, &escapes);
-      local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found[k]);
+      local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found.local());
     };
     if (options.threads <= 1) {
       for (std::size_t k = 0; k < seeds.size(); ++k)
@@ -171,7 +182,8 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.refinement_seconds = timer.lap();
     Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(),
                                                   partition.root_box(), options.regions != nullptr, options.cancellation);
-    vertices = std::move(far.vertices);
+    for (std::vector<Found_vertex>& list : found) lists.push_back(std::move(list));
+    lists.push_back(std::move(far.vertices));
     if (options.regions != nullptr) {
       options.regions->escaping = escaping;
       options.regions->far_sets = std::move(far.patch_sites);
@@ -179,9 +191,9 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.far_field_quadruples = far.quadruples;
     statistics.far_field_seconds = timer.lap();
   });
-  move_concatenated(found, vertices, options.cancellation);  // the vertices are large: one copy at a time
+  std::vector<Found_vertex> vertices = concatenated_into_largest(lists, options.cancellation);
   if (exponent != 0) {
-    for (Found_vertex& f : vertices) f.second = unscaled_vertex(f.second, input_sites, exponent);
+    for (Found_vertex& f : vertices) f.vertex = unscaled_vertex(f.vertex, input_sites, exponent);
     if (options.regions != nullptr) unscale_regions(*options.regions, exponent);
   }
   Diagram diagram =

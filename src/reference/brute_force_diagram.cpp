@@ -86,16 +86,16 @@ Diagram brute_force_diagram(const std::vector<Site>& sites) {
 
   // Keep one vertex per point: the tie set is a function of the point, so equal points share a tie set.
   std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<std::pair<std::vector<Site_index>, Vertex>> unique;
+  std::vector<Diagram_vertex> unique;
   for (std::size_t i = 0; i < found.size();) {
     std::size_t end = i;
     while (end < found.size() && found[end].first == found[i].first) ++end;
     const std::size_t group_start = unique.size();
     for (std::size_t k = i; k < end; ++k) {
       const bool seen = std::any_of(unique.begin() + group_start, unique.end(), [&](const auto& u) {
-        return compare_vertices(u.second, found[k].second) == Sign::ZERO;
+        return compare_vertices(u.vertex, found[k].second) == Sign::ZERO;
       });
-      if (!seen) unique.push_back(found[k]);
+      if (!seen) unique.push_back({found[k].first, found[k].second});
     }
     i = end;
   }

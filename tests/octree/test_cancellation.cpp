@@ -77,8 +77,8 @@ TEST_CASE("a cancellation requested before the call stops it, and every phase ch
   // Assembly, on the vertices of a small diagram.
   const Diagram small = octree_diagram(generate_sites(Site_family::uniform, 10, 1));
   REQUIRE_FALSE(small.vertices.empty());
-  std::vector<std::pair<std::vector<Site_index>, Vertex>> found;
-  for (const Diagram_vertex& v : small.vertices) found.emplace_back(v.tie_set, v.vertex);
+  std::vector<Diagram_vertex> found;
+  for (const Diagram_vertex& v : small.vertices) found.push_back({v.tie_set, v.vertex});
   CHECK_THROWS_AS(assemble_diagram<Certified_kernel>(10, {}, found, &cancellation), Cancelled);
   CHECK(assemble_diagram<Certified_kernel>(10, {}, found, nullptr).vertices.size() == small.vertices.size());
 }

@@ -1,0 +1,81 @@
+// assemble_diagram (diagram.h) sorts the vertices where they lie: against the order written out plainly
+// (std::vector's lexicographic tie sets, then the printed values, then the exact order), on shuffled
+// diagrams of every degenerate family and on tie sets that share their first four sites.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "diagram/diagram.h"
+#include "predicates/kernels.h"
+#include "reference/brute_force_diagram.h"
+#include "reference/site_generators.h"
+
+using namespace apollonius;
+
+namespace {
+
+// docs/contract.md's order, with no shortcut.
+bool plainly_before(const Diagram_vertex& u, const Diagram_vertex& v) {
+  if (u.tie_set != v.tie_set) return u.tie_set < v.tie_set;
+  if (u.rounded != v.rounded) return u.rounded < v.rounded;
+  return Certified_kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
+}
+
+std::vector<Diagram_vertex> unrounded_shuffle(const std::vector<Diagram_vertex>& vertices, std::uint64_t seed) {
+  std::vector<Diagram_vertex> shuffled;
+  for (const Diagram_vertex& v : vertices) shuffled.push_back({v.tie_set, v.vertex});
+  std::mt19937_64 random(seed);
+  std::shuffle(shuffled.begin(), shuffled.end(), random);
+  return shuffled;
+}
+
+}  // namespace
+
+TEST_CASE("assemble_diagram puts shuffled vertices back in the contract's order, on every family") {
+  for (Site_family family : {Site_family::uniform, Site_family::lattice, Site_family::cospherical, Site_family::sphere_tangent,
+                             Site_family::circle, Site_family::circle_mixed, Site_family::duplicates, Site_family::coplanar}) {
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      const std::vector<Site> sites = generate_sites(family, 24, seed);
+      const Diagram reference = brute_force_diagram(sites);
+      CAPTURE(static_cast<int>(family));
+      CAPTURE(seed);
+      const Diagram assembled = assemble_diagram<Certified_kernel>(sites.size(), reference.hidden,
+                                                                   unrounded_shuffle(reference.vertices, seed));
+      REQUIRE(assembled.vertices.size() == reference.vertices.size());
+      for (std::size_t i = 0; i < assembled.vertices.size(); ++i) {
+        const Diagram_vertex &a = assembled.vertices[i], &r = reference.vertices[i];
+        CHECK(a.tie_set == r.tie_set);
+        CHECK(a.rounded == r.rounded);
+        CHECK(a.rounded == a.vertex.rounded());
+        CHECK(Certified_kernel::compare(a.vertex, r.vertex) == Sign::ZERO);
+        if (i > 0) CHECK(plainly_before(assembled.vertices[i - 1], a));
+      }
+      CHECK(assembled.sites_without_vertex == reference.sites_without_vertex);
+    }
+  }
+}
+
+TEST_CASE("assemble_diagram orders tie sets that share their first four sites as std::vector does, a prefix first") {
+  const std::vector<Site> sites = generate_sites(Site_family::uniform, 12, 4);
+  const Diagram reference = brute_force_diagram(sites);
+  REQUIRE(reference.vertices.size() >= 2);
+  const Vertex& p = reference.vertices[0].vertex;
+  const Vertex& q = reference.vertices[1].vertex;
+  REQUIRE(p.rounded() != q.rounded());
+  // The tie sets need not match the vertices: the order only reads them.
+  const std::vector<std::vector<Site_index>> tie_sets = {
+      {0, 1, 2, 3}, {0, 1, 2, 3, 4}, {0, 1, 2, 3, 5}, {0, 1, 2, 3, 4, 6}, {0, 1, 2, 4}, {0, 1, 2, 3, 4, 5, 6}, {1, 2, 3, 4}};
+  std::vector<Diagram_vertex> made;
+  for (const auto& tie : tie_sets) {
+    made.push_back({tie, p});
+    made.push_back({tie, q});
+  }
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    CAPTURE(seed);
+    const Diagram assembled = assemble_diagram<Certified_kernel>(12, {}, unrounded_shuffle(made, seed));
+    REQUIRE(assembled.vertices.size() == made.size());
+    for (std::size_t i = 1; i < assembled.vertices.size(); ++i)
+      CHECK(plainly_before(assembled.vertices[i - 1], assembled.vertices[i]));
+  }
+}
