@@ -97,19 +97,4 @@ void move_concatenated(std::vector<std::vector<T>>& lists, std::vector<T>& out, 
   }
 }
 
-// The elements of every list, in an order that depends on the lists' sizes: the largest list is kept as it
-// is (not moved element by element) and the others are moved to its end; for elements whose order the
-// caller does not need (assemble_diagram sorts them). Checks every 4096 elements.
-template <class T>
-std::vector<T> concatenated_into_largest(std::vector<std::vector<T>>& lists, const Cancellation* cancellation) {
-  if (lists.empty()) return {};
-  const auto largest = std::max_element(lists.begin(), lists.end(), [](const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() < b.size();
-  });
-  std::vector<T> out = std::move(*largest);
-  std::vector<T>().swap(*largest);
-  move_concatenated(lists, out, cancellation);
-  return out;
-}
-
 }  // namespace apollonius

@@ -40,11 +40,17 @@ struct Diagram {
 // Keeps only the vertices whose centre lies in the closed box (exact).
 void restrict_to_box(Diagram& diagram, const Axis_box& box);
 
-// Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram,
-// sorting them in place. Kernel: kernels.h (the certified one, unless for the floating path). Checks
-// cancellation (cancellation.h) while rounding.
+// Rounds, sorts and classifies raw vertices (each point once, with its full tie set) into a Diagram.
+// Kernel: kernels.h (the certified one, unless for the floating path). Checks cancellation
+// (cancellation.h) while rounding.
 template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden, std::vector<Diagram_vertex> vertices,
                          const Cancellation* cancellation = nullptr);
+
+// The same from several lists (one per thread): sorted in place if one list has room for all the vertices,
+// else each vertex moved once, in order, into the diagram.
+template <class Kernel>
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
+                         std::vector<std::vector<Diagram_vertex>> lists, const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

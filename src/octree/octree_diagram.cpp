@@ -3,10 +3,12 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <new>
 #include <stdexcept>
 
 #include "diagram/cancellable_steps.h"
@@ -29,10 +31,11 @@ namespace {
 // between G and R cost about R / G per face (docs/benchmarks.md, "the root box at twice G").
 constexpr double kFarFieldScale = 2;
 
-// Each thread's list of vertices starts with room for this many per site that it may meet: about the
-// expected number of Delaunay tetrahedra per point of a uniform random set in space (6.77). Room that is
-// never filled is address space, not memory: its pages are never touched.
-constexpr std::size_t kReservedVerticesPerSite = 7;
+// Each thread's list of vertices starts with room for this many per site, so that it is never moved while
+// it grows and the assembly sorts it in place: a little more than the expected number of Delaunay
+// tetrahedra per point of a uniform random set in space (6.77). Room that is never filled is address
+// space, not memory: its pages are never touched.
+constexpr std::size_t kReservedVerticesPerSite = 8;
 
 // Seconds since the last call (or construction).
 class Lap_timer {
@@ -94,7 +97,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       options.regions->escaping = active;
       if (active.size() >= 2) options.regions->far_sets.push_back(active);
     }
-    return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), {}, options.cancellation);
+    return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), std::vector<Diagram_vertex>{}, options.cancellation);
   }
   const int exponent = normalizing_exponent(input_sites, active);
   const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
@@ -108,7 +111,11 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const int threads = std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency());
   tbb::enumerable_thread_specific<std::vector<Found_vertex>> found([&] {
     std::vector<Found_vertex> list;
-    list.reserve(kReservedVerticesPerSite * active.size() / static_cast<std::size_t>(threads));
+    try {
+      list.reserve(kReservedVerticesPerSite * active.size());  // every thread may find nearly all of them
+    } catch (const std::bad_alloc&) {
+      // Address space refused (a limit, or strict overcommit): the list grows as it goes.
+    }
     return list;
   });
   std::vector<std::vector<Found_vertex>> lists;
@@ -161,16 +168,35 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       if (regions != nullptr) local.record_regions(regions, &escapes);
       local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found.local());
     };
-    if (options.threads <= 1) {
-      for (std::size_t k = 0; k < seeds.size(); ++k)
-        refine_seed(k, options.regions != nullptr ? &options.regions->boxes : nullptr);
-    } else {
-      std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
-      tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
-        refine_seed(k, options.regions != nullptr ? &seed_regions[k] : nullptr);
-      });
-      if (options.regions != nullptr) move_concatenated(seed_regions, options.regions->boxes, options.cancellation);
+    // The far field needs only the escaping sites: it runs beside the refinement (a task that the one thread
+    // of --threads 1 runs at the wait).
+    Far_field_vertices far;
+    tbb::task_group far_task;
+    far_task.run([&] {
+      Lap_timer far_timer;
+      far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box(),
+                                 options.regions != nullptr, options.cancellation);
+      statistics.far_field_seconds = far_timer.lap();
+    });
+    try {
+      if (options.threads <= 1) {
+        for (std::size_t k = 0; k < seeds.size(); ++k)
+          refine_seed(k, options.regions != nullptr ? &options.regions->boxes : nullptr);
+      } else {
+        std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
+        tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
+          refine_seed(k, options.regions != nullptr ? &seed_regions[k] : nullptr);
+        });
+        if (options.regions != nullptr) move_concatenated(seed_regions, options.regions->boxes, options.cancellation);
+      }
+    } catch (...) {
+      far_task.cancel();
+      far_task.wait();  // a task_group must not be destroyed with a task running
+      throw;
     }
+    statistics.refinement_seconds = timer.lap();
+    far_task.wait();
+    timer.lap();
     for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();
       statistics.boxes += counts.boxes;
@@ -179,9 +205,6 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       statistics.quadruples += counts.quadruples;
       statistics.distinct_quadruples += counts.distinct_quadruples;
     }
-    statistics.refinement_seconds = timer.lap();
-    Far_field_vertices far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(),
-                                                  partition.root_box(), options.regions != nullptr, options.cancellation);
     for (std::vector<Found_vertex>& list : found) lists.push_back(std::move(list));
     lists.push_back(std::move(far.vertices));
     if (options.regions != nullptr) {
@@ -189,15 +212,14 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       options.regions->far_sets = std::move(far.patch_sites);
     }
     statistics.far_field_quadruples = far.quadruples;
-    statistics.far_field_seconds = timer.lap();
   });
-  std::vector<Found_vertex> vertices = concatenated_into_largest(lists, options.cancellation);
   if (exponent != 0) {
-    for (Found_vertex& f : vertices) f.vertex = unscaled_vertex(f.vertex, input_sites, exponent);
+    for (std::vector<Found_vertex>& list : lists)
+      for (Found_vertex& f : list) f.vertex = unscaled_vertex(f.vertex, input_sites, exponent);
     if (options.regions != nullptr) unscale_regions(*options.regions, exponent);
   }
   Diagram diagram =
-      assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(vertices), options.cancellation);
+      assemble_diagram<Kernel>(sites.size(), std::move(hidden), std::move(lists), options.cancellation);
   statistics.assembly_seconds = timer.lap();
   if (options.statistics) *options.statistics = statistics;
   return diagram;

@@ -29,7 +29,8 @@
 
 namespace apollonius {
 
-// What the computation did, for --stats: wall times of the phases and the sizes they worked on.
+// What the computation did, for --stats: wall times of the phases (the far field runs beside the
+// refinement, so with more than one thread its time overlaps) and the sizes they worked on.
 struct Octree_statistics {
   double partition_seconds = 0, propagation_seconds = 0, refinement_seconds = 0, far_field_seconds = 0,
          assembly_seconds = 0;

@@ -30,9 +30,19 @@ std::vector<Diagram_vertex> unrounded_shuffle(const std::vector<Diagram_vertex>&
   return shuffled;
 }
 
+// The vertices dealt into three lists (as threads leave them): with `room`, the first can hold them all.
+std::vector<std::vector<Diagram_vertex>> dealt(std::vector<Diagram_vertex> vertices, bool room) {
+  std::vector<std::vector<Diagram_vertex>> lists(3);
+  if (room) lists[0].reserve(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) lists[i % 3].push_back(std::move(vertices[i]));
+  for (auto& list : lists)
+    if (!room) list.shrink_to_fit();
+  return lists;
+}
+
 }  // namespace
 
-TEST_CASE("assemble_diagram puts shuffled vertices back in the contract's order, on every family") {
+TEST_CASE("assemble_diagram puts shuffled vertices back in the contract's order, on every family, from one list or three") {
   for (Site_family family : {Site_family::uniform, Site_family::lattice, Site_family::cospherical, Site_family::sphere_tangent,
                              Site_family::circle, Site_family::circle_mixed, Site_family::duplicates, Site_family::coplanar}) {
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
@@ -40,8 +50,13 @@ TEST_CASE("assemble_diagram puts shuffled vertices back in the contract's order,
       const Diagram reference = brute_force_diagram(sites);
       CAPTURE(static_cast<int>(family));
       CAPTURE(seed);
-      const Diagram assembled = assemble_diagram<Certified_kernel>(sites.size(), reference.hidden,
-                                                                   unrounded_shuffle(reference.vertices, seed));
+      // One list, three with room in the first, three with none.
+      const int way = static_cast<int>(seed % 3);
+      CAPTURE(way);
+      std::vector<Diagram_vertex> shuffled = unrounded_shuffle(reference.vertices, seed);
+      const Diagram assembled =
+          way == 0 ? assemble_diagram<Certified_kernel>(sites.size(), reference.hidden, std::move(shuffled))
+                   : assemble_diagram<Certified_kernel>(sites.size(), reference.hidden, dealt(std::move(shuffled), way == 1));
       REQUIRE(assembled.vertices.size() == reference.vertices.size());
       for (std::size_t i = 0; i < assembled.vertices.size(); ++i) {
         const Diagram_vertex &a = assembled.vertices[i], &r = reference.vertices[i];
@@ -73,7 +88,8 @@ TEST_CASE("assemble_diagram orders tie sets that share their first four sites as
   }
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     CAPTURE(seed);
-    const Diagram assembled = assemble_diagram<Certified_kernel>(12, {}, unrounded_shuffle(made, seed));
+    const Diagram assembled = seed % 2 == 0 ? assemble_diagram<Certified_kernel>(12, {}, unrounded_shuffle(made, seed))
+                                            : assemble_diagram<Certified_kernel>(12, {}, dealt(unrounded_shuffle(made, seed), false));
     REQUIRE(assembled.vertices.size() == made.size());
     for (std::size_t i = 1; i < assembled.vertices.size(); ++i)
       CHECK(plainly_before(assembled.vertices[i - 1], assembled.vertices[i]));
