@@ -60,6 +60,9 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   diagram.hidden = std::move(hidden);
   gather_if_room(lists, cancellation);
   std::vector<Sort_key> keys;
+  std::size_t total = 0;
+  for (const auto& list : lists) total += list.size();
+  keys.reserve(total);
   for (std::size_t l = 0; l < lists.size(); ++l)
     for (std::size_t k = 0; k < lists[l].size(); ++k) {
       if (k % 1024 == 0) throw_if_cancelled(cancellation);
