@@ -196,7 +196,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     }
     statistics.refinement_seconds = timer.lap();
     far_task.wait();
-    timer.lap();
+    timer.lap();  // the wait is the far field's, which it timed itself
     for (const Box_refinement<Kernel>& r : refinement) {
       const Refinement_counts counts = r.counts();
       statistics.boxes += counts.boxes;
