@@ -14,7 +14,7 @@ namespace {
 struct Sort_key {
   std::array<Site_index, 4> head;  // the tie set's first four sites
   std::size_t tie_size;
-  std::size_t list, position;  // where the vertex lies
+  std::size_t position;  // where the vertex lies
 };
 
 // Puts vertices[order[i]] at i for every i, moving each vertex once (one cycle of the permutation at a
@@ -37,44 +37,38 @@ void permute_in_place(std::vector<Diagram_vertex>& vertices, std::vector<std::si
   }
 }
 
-// The lists as one, if one of them has room for all (moving the others onto its end); else unchanged.
-void gather_if_room(std::vector<std::vector<Diagram_vertex>>& lists, const Cancellation* cancellation) {
+// The lists as one: the others moved onto the end of one with room for all, whose vertices stay where they
+// are; else (no list has room) all of them moved into a new one.
+std::vector<Diagram_vertex> gathered(std::vector<std::vector<Diagram_vertex>>& lists, const Cancellation* cancellation) {
   std::size_t total = 0;
   for (const auto& list : lists) total += list.size();
+  std::vector<Diagram_vertex> all;
   const auto roomy = std::find_if(lists.begin(), lists.end(), [&](const auto& list) { return list.capacity() >= total; });
-  if (roomy == lists.end()) return;
-  std::vector<Diagram_vertex> all = std::move(*roomy);
-  std::vector<Diagram_vertex>().swap(*roomy);
+  if (roomy != lists.end()) all = std::move(*roomy);  // leaves *roomy empty
   move_concatenated(lists, all, cancellation);
-  lists.clear();
-  lists.push_back(std::move(all));
+  return all;
 }
 
 }  // namespace
 
 template <class Kernel>
-Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
-                         std::vector<std::vector<Diagram_vertex>> lists, const Cancellation* cancellation) {
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden, std::vector<Diagram_vertex> vertices,
+                         const Cancellation* cancellation) {
   Diagram diagram;
   diagram.site_count = site_count;
   diagram.hidden = std::move(hidden);
-  gather_if_room(lists, cancellation);
-  std::vector<Sort_key> keys;
-  std::size_t total = 0;
-  for (const auto& list : lists) total += list.size();
-  keys.reserve(total);
-  for (std::size_t l = 0; l < lists.size(); ++l)
-    for (std::size_t k = 0; k < lists[l].size(); ++k) {
-      if (k % 1024 == 0) throw_if_cancelled(cancellation);
-      Diagram_vertex& v = lists[l][k];
-      v.rounded = Kernel::printed_coordinates(v.vertex);
-      keys.push_back({{v.tie_set[0], v.tie_set[1], v.tie_set[2], v.tie_set[3]}, v.tie_set.size(), l, k});
-    }
+  std::vector<Sort_key> keys(vertices.size());
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    if (k % 1024 == 0) throw_if_cancelled(cancellation);
+    Diagram_vertex& v = vertices[k];
+    v.rounded = Kernel::printed_coordinates(v.vertex);
+    keys[k] = {{v.tie_set[0], v.tie_set[1], v.tie_set[2], v.tie_set[3]}, v.tie_set.size(), k};
+  }
   // docs/contract.md orders lines by tie set (lexicographic, a prefix first), then by printed values; equal
   // printed values fall back to the exact order.
   cancellable_sort(keys.begin(), keys.end(), cancellation, [&](const Sort_key& a, const Sort_key& b) {
     if (a.head != b.head) return a.head < b.head;
-    const Diagram_vertex &u = lists[a.list][a.position], &v = lists[b.list][b.position];
+    const Diagram_vertex &u = vertices[a.position], &v = vertices[b.position];
     if (a.tie_size > 4 || b.tie_size > 4) {
       const auto [p, q] = std::mismatch(u.tie_set.begin() + 4, u.tie_set.end(), v.tie_set.begin() + 4, v.tie_set.end());
       if (p != u.tie_set.end() || q != v.tie_set.end()) return q != v.tie_set.end() && (p == u.tie_set.end() || *p < *q);
@@ -82,20 +76,11 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
     if (u.rounded != v.rounded) return u.rounded < v.rounded;
     return Kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
   });
-  if (lists.size() == 1) {
-    std::vector<std::size_t> order(keys.size());
-    for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].position;
-    std::vector<Sort_key>().swap(keys);
-    permute_in_place(lists[0], order, cancellation);
-    diagram.vertices = std::move(lists[0]);
-  } else {
-    diagram.vertices.reserve(keys.size());
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-      if (i % 4096 == 0) throw_if_cancelled(cancellation);
-      diagram.vertices.push_back(std::move(lists[keys[i].list][keys[i].position]));
-    }
-  }
-  std::vector<std::vector<Diagram_vertex>>().swap(lists);
+  std::vector<std::size_t> order(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].position;
+  std::vector<Sort_key>().swap(keys);
+  permute_in_place(vertices, order, cancellation);
+  diagram.vertices = std::move(vertices);
 
   std::vector<bool> has_vertex(site_count, false), is_hidden_site(site_count, false);
   for (const Diagram_vertex& v : diagram.vertices)
@@ -107,11 +92,9 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
 }
 
 template <class Kernel>
-Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden, std::vector<Diagram_vertex> vertices,
-                         const Cancellation* cancellation) {
-  std::vector<std::vector<Diagram_vertex>> lists;
-  lists.push_back(std::move(vertices));
-  return assemble_diagram<Kernel>(site_count, std::move(hidden), std::move(lists), cancellation);
+Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
+                         std::vector<std::vector<Diagram_vertex>> lists, const Cancellation* cancellation) {
+  return assemble_diagram<Kernel>(site_count, std::move(hidden), gathered(lists, cancellation), cancellation);
 }
 
 template Diagram assemble_diagram<Certified_kernel>(std::size_t, std::vector<Hidden_site>, std::vector<Diagram_vertex>,

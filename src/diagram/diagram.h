@@ -47,8 +47,8 @@ template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden, std::vector<Diagram_vertex> vertices,
                          const Cancellation* cancellation = nullptr);
 
-// The same from several lists (one per thread): sorted in place if one list has room for all the vertices,
-// else each vertex moved once, in order, into the diagram.
+// The same from several lists (one per thread), gathered onto one with room for all if there is one (else
+// into a new one), then sorted in place.
 template <class Kernel>
 Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden,
                          std::vector<std::vector<Diagram_vertex>> lists, const Cancellation* cancellation = nullptr);
