@@ -32,6 +32,10 @@ class Computed_once {
   }
   ~Computed_once() { release(node_.load(std::memory_order_relaxed)); }
 
+  // Forgets the value (a later get_or_compute computes it again). Like assignment, must not run beside other
+  // uses of the same object.
+  void reset() { release(node_.exchange(nullptr, std::memory_order_acq_rel)); }
+
   // The value if published, else null.
   const T* get() const {
     const Node* node = node_.load(std::memory_order_acquire);

@@ -39,6 +39,7 @@ struct Certified_kernel {
   static bool hidden(const Site& i, Site_index index_i, const Site& j, Site_index index_j) {
     return is_hidden(i, index_i, j, index_j);
   }
+  static void release_exact_values(Vertex& v) { v.release_exact_values(); }
   // The correctly rounded x, y, z, r; reused when vertex_in_box's exact stage computed them already.
   static std::array<double, 4> printed_coordinates(const Vertex& v) {
     const std::array<double, 4>* known = v.rounded_if_computed();
@@ -64,6 +65,8 @@ struct Floating_kernel {
   static bool hidden(const Site& i, Site_index index_i, const Site& j, Site_index index_j) {
     return is_hidden.floating(i, index_i, j, index_j);
   }
+  // The floating path's vertices hold no exact values.
+  static void release_exact_values(Vertex&) {}
   // The point as computed in doubles.
   static std::array<double, 4> printed_coordinates(const Vertex& v) { return absolute_point<double>(v); }
 };

@@ -111,6 +111,11 @@ const Vertex_coordinates<Exact>& Vertex::coordinates<Exact>() const {
   });
 }
 
+void Vertex::release_exact_values() {
+  exact_.reset();
+  ball_.reset();
+}
+
 std::array<Interval, 4> Vertex::point_interval() const {
   Rounding_guard guard;
   const Site& o = origin();

@@ -102,6 +102,12 @@ class Vertex {
     return X != nullptr && *X ? &**X : nullptr;
   }
 
+  // Releases the exact coordinates and the balls, which coordinates<Exact>() and ball_coordinates() compute
+  // again from the quadruple if asked: for a vertex stored in a diagram once rounded, which needs them
+  // again only to order it against an equal rounding. On a near-degenerate input they are most of the
+  // vertices' memory. Like any write, must not run beside other uses of the same object.
+  void release_exact_values();
+
   // For a vertex made from its exact coordinates (vertices_of's exact stage) or from wide intervals whose
   // X lies beyond [2^-500, 2^500]; else null.
   const Scaled_box* scaled_box() const { return scaled_box_.get(); }

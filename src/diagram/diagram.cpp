@@ -61,7 +61,7 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
   for (std::size_t k = 0; k < vertices.size(); ++k) {
     if (k % 1024 == 0) throw_if_cancelled(cancellation);
     Diagram_vertex& v = vertices[k];
-    v.rounded = Kernel::printed_coordinates(v.vertex);
+    if (!v.is_rounded()) v.rounded = Kernel::printed_coordinates(v.vertex);
     keys[k] = {{v.tie_set[0], v.tie_set[1], v.tie_set[2], v.tie_set[3]}, v.tie_set.size(), k};
   }
   // docs/contract.md orders lines by tie set (lexicographic, a prefix first), then by printed values; equal

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "diagram/cancellation.h"
@@ -13,12 +15,25 @@
 namespace apollonius {
 
 // Invariant: tie_set is ascending, has 4 or more sites, and contains vertex.sites(). The algorithms make
-// these without `rounded`, and assemble_diagram sorts them where they lie: one copy of them at a time.
+// these, settled or not, and assemble_diagram sorts them where they lie: one copy of them at a time.
 struct Diagram_vertex {
-  std::vector<Site_index> tie_set;   // every site at the minimum weighted distance
-  Vertex vertex;                     // one defining quadruple of the tie set, and its root
-  std::array<double, 4> rounded{};  // x, y, z, r: the correctly rounded doubles, for output only (set by assemble_diagram)
+  std::vector<Site_index> tie_set;  // every site at the minimum weighted distance
+  Vertex vertex;                    // one defining quadruple of the tie set, and its root
+  // x, y, z, r: the correctly rounded doubles, for output only; NaN until settled or assembled.
+  std::array<double, 4> rounded{kNaN, kNaN, kNaN, kNaN};
+
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  bool is_rounded() const { return !std::isnan(rounded[0]); }
 };
+
+// Rounds v unless it is rounded, then releases its vertex's exact values (Vertex::release_exact_values):
+// for the lists that hold vertices until the assembly, where the exact values of a near-degenerate input
+// would otherwise pile up.
+template <class Kernel>
+void settle(Diagram_vertex& v) {
+  if (!v.is_rounded()) v.rounded = Kernel::printed_coordinates(v.vertex);
+  Kernel::release_exact_values(v.vertex);
+}
 
 // A site whose cell has no interior: inside (or tangent inside) the ball of hidden_by, or an exact
 // duplicate of the earlier site hidden_by.

@@ -30,7 +30,9 @@ void append_unique(std::vector<Found_vertex>& out, std::size_t first, Found_vert
   const bool seen = std::any_of(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [&](const Found_vertex& f) {
     return f.tie_set == found.tie_set && Kernel::compare(f.vertex, found.vertex) == Sign::ZERO;
   });
-  if (!seen) out.push_back(std::move(found));
+  if (seen) return;
+  out.push_back(std::move(found));
+  settle<Kernel>(out.back());
 }
 
 template <class Kernel>

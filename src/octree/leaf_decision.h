@@ -12,7 +12,7 @@
 
 namespace apollonius {
 
-// A vertex with its tie set (ascending), not yet rounded: the very element of the diagram it goes to.
+// A vertex with its tie set (ascending): the very element of the diagram it goes to.
 using Found_vertex = Diagram_vertex;
 
 // Appends every vertex of a quadruple of `candidates` for which `located` holds and no site of `owners` is
@@ -24,7 +24,8 @@ void decide_quadruples(const std::vector<Site>& sites, const std::vector<Site_in
                        const std::vector<Site_index>& owners, const std::function<bool(const Vertex&)>& located,
                        std::vector<Found_vertex>& out, std::size_t first);
 
-// Appends `found` to `out` unless an equal vertex is already in out[first..].
+// Appends `found` to `out` unless an equal vertex is already in out[first..], and settles it (diagram.h):
+// the list holds each vertex until the assembly, so it is rounded here, in parallel, and its exact values go.
 template <class Kernel>
 void append_unique(std::vector<Found_vertex>& out, std::size_t first, Found_vertex found);
 

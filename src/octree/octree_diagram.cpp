@@ -215,7 +215,10 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   });
   if (exponent != 0) {
     for (std::vector<Found_vertex>& list : lists)
-      for (Found_vertex& f : list) f.vertex = unscaled_vertex(f.vertex, input_sites, exponent);
+      for (Found_vertex& f : list) {  // rounded again on the input sites: the scaled rounding need not scale
+        f = {std::move(f.tie_set), unscaled_vertex(f.vertex, input_sites, exponent)};
+        settle<Kernel>(f);
+      }
     if (options.regions != nullptr) unscale_regions(*options.regions, exponent);
   }
   Diagram diagram =

@@ -22,9 +22,14 @@ bool plainly_before(const Diagram_vertex& u, const Diagram_vertex& v) {
   return Certified_kernel::compare(u.vertex, v.vertex) == Sign::NEGATIVE;
 }
 
-std::vector<Diagram_vertex> unrounded_shuffle(const std::vector<Diagram_vertex>& vertices, std::uint64_t seed) {
+// The vertices without their rounding, in a random order; `settled` as the octree's lists hold them instead.
+std::vector<Diagram_vertex> unrounded_shuffle(const std::vector<Diagram_vertex>& vertices, std::uint64_t seed,
+                                              bool settled = false) {
   std::vector<Diagram_vertex> shuffled;
-  for (const Diagram_vertex& v : vertices) shuffled.push_back({v.tie_set, v.vertex});
+  for (const Diagram_vertex& v : vertices) {
+    shuffled.push_back({v.tie_set, v.vertex});
+    if (settled) settle<Certified_kernel>(shuffled.back());
+  }
   std::mt19937_64 random(seed);
   std::shuffle(shuffled.begin(), shuffled.end(), random);
   return shuffled;
@@ -43,17 +48,20 @@ std::vector<std::vector<Diagram_vertex>> dealt(std::vector<Diagram_vertex> verti
 }  // namespace
 
 TEST_CASE("assemble_diagram puts shuffled vertices back in the contract's order, on every family, from one list or three") {
-  for (Site_family family : {Site_family::uniform, Site_family::lattice, Site_family::cospherical, Site_family::sphere_tangent,
-                             Site_family::circle, Site_family::circle_mixed, Site_family::duplicates, Site_family::coplanar}) {
-    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+  for (Site_family family : {Site_family::uniform, Site_family::lattice, Site_family::lattice_noise, Site_family::cospherical,
+                             Site_family::sphere_tangent, Site_family::circle, Site_family::circle_mixed, Site_family::duplicates,
+                             Site_family::coplanar}) {
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
       const std::vector<Site> sites = generate_sites(family, 24, seed);
       const Diagram reference = brute_force_diagram(sites);
       CAPTURE(static_cast<int>(family));
       CAPTURE(seed);
-      // One list, three with room in the first, three with none.
+      // One list, three with room in the first, three with none; each with the vertices settled or not.
       const int way = static_cast<int>(seed % 3);
+      const bool settled = seed % 2 == 0;
       CAPTURE(way);
-      std::vector<Diagram_vertex> shuffled = unrounded_shuffle(reference.vertices, seed);
+      CAPTURE(settled);
+      std::vector<Diagram_vertex> shuffled = unrounded_shuffle(reference.vertices, seed, settled);
       const Diagram assembled =
           way == 0 ? assemble_diagram<Certified_kernel>(sites.size(), reference.hidden, std::move(shuffled))
                    : assemble_diagram<Certified_kernel>(sites.size(), reference.hidden, dealt(std::move(shuffled), way == 1));
@@ -93,5 +101,30 @@ TEST_CASE("assemble_diagram orders tie sets that share their first four sites as
     REQUIRE(assembled.vertices.size() == made.size());
     for (std::size_t i = 1; i < assembled.vertices.size(); ++i)
       CHECK(plainly_before(assembled.vertices[i - 1], assembled.vertices[i]));
+  }
+}
+
+TEST_CASE("a settled vertex keeps its rounding, and computes its released exact values again, equal") {
+  for (Site_family family : {Site_family::uniform, Site_family::lattice_noise, Site_family::wide_range, Site_family::scaled_down,
+                             Site_family::far_vertices, Site_family::cospherical, Site_family::circle_mixed}) {
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+      const std::vector<Site> sites = generate_sites(family, 16, seed);
+      const Diagram reference = brute_force_diagram(sites);
+      CAPTURE(static_cast<int>(family));
+      CAPTURE(seed);
+      for (const Diagram_vertex& v : reference.vertices) {
+        const std::array<Root_number<Exact>, 4> exact = exact_point(v.vertex);  // computed before the copy
+        Diagram_vertex settled{v.tie_set, v.vertex};
+        REQUIRE_FALSE(settled.is_rounded());
+        settle<Certified_kernel>(settled);
+        CHECK(settled.is_rounded());
+        CHECK(settled.rounded == v.rounded);
+        CHECK(settled.vertex.ball_coordinates_if_computed() == nullptr);
+        const std::array<Root_number<Exact>, 4> again = exact_point(settled.vertex);
+        for (int j = 0; j < 4; ++j) CHECK(compare(again[j], exact[j]) == Sign::ZERO);
+        CHECK(Certified_kernel::compare(settled.vertex, v.vertex) == Sign::ZERO);
+        for (const Site& s : sites) CHECK(Certified_kernel::conflict(settled.vertex, s) == Certified_kernel::conflict(v.vertex, s));
+      }
+    }
   }
 }
