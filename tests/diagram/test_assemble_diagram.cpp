@@ -1,6 +1,7 @@
 // assemble_diagram (diagram.h) sorts the vertices where they lie: against the order written out plainly
 // (std::vector's lexicographic tie sets, then the printed values, then the exact order), on shuffled
-// diagrams of every degenerate family and on tie sets that share their first four sites.
+// diagrams of every degenerate family (settled or not) and on tie sets that share their first four sites.
+// settle (diagram.h) keeps the rounding and lets the exact values be computed again, equal.
 #include <doctest/doctest.h>
 
 #include <algorithm>
