@@ -15,8 +15,8 @@ namespace {
 constexpr std::size_t kLeafCandidates = 6;
 // The quadruple cache holds at most about this many quadruples before each leaf (each up to two vertices,
 // ~0.5 KB, and a few KB more where they carry exact coordinates among subnormal sites), and
-// C(kStagnantCandidates, 4) more within it. Larger caches recompute less but run slower, and 2,048 held
-// 3.6 MiB more on lattice-noise for 3 % fewer vertices_of at the same time (docs/benchmarks.md).
+// C(kStagnantCandidates, 4) more within it. Larger caches recompute less but hold more and run no faster
+// (docs/benchmarks.md, "Settled vertices, and a smaller quadruple cache").
 constexpr std::size_t kCachedQuadruples = 1024;
 // Each candidate is tested against this many of the best candidates at the box centre.
 constexpr std::size_t kWitnesses = 4;
