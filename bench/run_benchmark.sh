@@ -24,7 +24,8 @@ usage() {
   cat <<EOF
 Usage: $0 [options]
   --inputs LIST           comma-separated inputs (default: $INPUTS)
-                          names: BALL_SMALL_N, 1j3h, 1hpv, pept, or a path to a balls file
+                          names: BALL_SMALL_N, 1j3h, 1hpv, pept, a path to a balls file, or
+                          generate:FAMILY:N:SEED ('apollonius3d generate FAMILY --n N --seed SEED')
   --repeat R              runs per tool and input (default: $REPEAT)
   --apollonius-args "..." extra arguments for 'apollonius3d vertices' (env APOLLONIUS_ARGS)
   --timeout SECONDS       limit per run, 0 = none (default: $TIMEOUT); shown as >T
@@ -79,6 +80,17 @@ prepare_input() {
       echo "$name"; return ;;
     pept)
       echo "$REPO_DIR/tests/data/pept.balls"; return ;;
+    generate:*)                       # generate:FAMILY:N:SEED, made by apollonius3d itself
+      local family count seed
+      IFS=: read -r _ family count seed <<<"$name"
+      [[ -n $family && $count =~ ^[1-9][0-9]*$ && $seed =~ ^[0-9]+$ ]] ||
+        die "input '$name' is not generate:FAMILY:N:SEED"
+      [[ -x $APOLLONIUS ]] || die "apollonius3d not found at '$APOLLONIUS', needed to generate '$name'"
+      out="$WORK_DIR/inputs/generate_${family}_${count}_${seed}.balls"
+      if [[ ! -s $out || $APOLLONIUS -nt $out ]]; then
+        "$APOLLONIUS" generate "$family" --n "$count" --seed "$seed" -o "$out" ||
+          die "apollonius3d could not generate '$name'"
+      fi ;;
     BALL_SMALL_*|ANO*|Vis_*|Ext_*)    # vdrc: count line, then 'id x y z r'
       src="$DATA_DIR/vdrc/$name.txt"
       out="$WORK_DIR/inputs/$name.balls"
