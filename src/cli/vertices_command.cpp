@@ -71,7 +71,7 @@ int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
     if (format == "json")
       write_vertices_json(o, diagram, command.stats ? &stats : nullptr);
     else
-      write_vertices_text(o, diagram);
+      write_vertices_text(o, diagram, command.diagram.threads);
   });
   if (command.stats) {
     print_statistics(err, stats);

@@ -1,17 +1,27 @@
 #include "io/write_vertices.h"
 
+#include <algorithm>
 #include <charconv>
 #include <string>
+
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 
 #include "io/json_output.h"
 #include "io/round_trip.h"
 
 namespace apollonius {
 
-void write_vertices_text(std::ostream& out, const Diagram& diagram) {
-  std::string text;
+namespace {
+
+// Vertices per block: about 150 KB of text.
+constexpr std::size_t kBlockVertices = 2048;
+
+// Appends the lines of vertices [first, last) to text.
+void format_vertices(const std::vector<Diagram_vertex>& vertices, std::size_t first, std::size_t last, std::string& text) {
   char number[32];
-  for (const Diagram_vertex& v : diagram.vertices) {
+  for (std::size_t k = first; k < last; ++k) {
+    const Diagram_vertex& v = vertices[k];
     for (const Site_index site : v.tie_set) {
       text.append(number, std::to_chars(number, number + sizeof number, site).ptr);
       text += ' ';
@@ -20,12 +30,46 @@ void write_vertices_text(std::ostream& out, const Diagram& diagram) {
       text.append(number, write_round_trip(number, v.rounded[j]));
       text += j < 3 ? ' ' : '\n';
     }
-    if (text.size() > (1u << 16)) {  // written in chunks
-      out << text;
-      text.clear();
-    }
   }
-  out << text;
+}
+
+}  // namespace
+
+void write_vertices_text(std::ostream& out, const Diagram& diagram, int threads) {
+  const std::vector<Diagram_vertex>& vertices = diagram.vertices;
+  const std::size_t blocks = (vertices.size() + kBlockVertices - 1) / kBlockVertices;
+  threads = std::clamp(threads, 1, tbb::this_task_arena::max_concurrency());
+  if (threads == 1 || blocks <= 1) {
+    std::string text;
+    for (std::size_t b = 0; b < blocks; ++b) {
+      text.clear();
+      format_vertices(vertices, b * kBlockVertices, std::min(vertices.size(), (b + 1) * kBlockVertices), text);
+      out << text;
+    }
+    return;
+  }
+  // Else formatting would be serial after the parallel octree (docs/benchmarks.md). Blocks in flight are
+  // bounded (two per thread), so the text held stays a few blocks whatever the diagram's size.
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    std::size_t next = 0;
+    tbb::parallel_pipeline(
+        static_cast<std::size_t>(2 * threads),
+        tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
+                                            [&](tbb::flow_control& control) -> std::size_t {
+                                              if (next == blocks) control.stop();
+                                              return next++;
+                                            }) &
+            tbb::make_filter<std::size_t, std::string>(tbb::filter_mode::parallel,
+                                                       [&](std::size_t b) {
+                                                         std::string text;
+                                                         format_vertices(vertices, b * kBlockVertices,
+                                                                         std::min(vertices.size(), (b + 1) * kBlockVertices), text);
+                                                         return text;
+                                                       }) &
+            tbb::make_filter<std::string, void>(tbb::filter_mode::serial_in_order,
+                                                [&](const std::string& text) { out << text; }));
+  });
 }
 
 void write_vertices_json(std::ostream& out, const Diagram& diagram, const std::vector<Predicate_statistics>* stats) {

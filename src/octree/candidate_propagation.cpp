@@ -87,11 +87,18 @@ void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std:
     if (held.size() == kWitnesses ||
         std::any_of(held.begin(), held.end(), [&](const auto& w) { return w.first == e.site; }))
       continue;
-    held.emplace_back(e.site, expand_witness(expand_at_centre(sites[e.site], graph.frame[e.box])));
-    add_corners(held.back().second, sites[e.site], graph.frame[e.box]);
+    held.emplace_back(e.site, Witness_expansion{});  // expanded below, in parallel
     for (std::size_t k = graph.neighbour_start[e.box]; k < graph.neighbour_start[e.box + 1]; ++k)
       offer(e.site, graph.neighbours[k]);
   }
+  // Only the order of the sites decides which become witnesses, so their expansions wait until then.
+  tbb::parallel_for(std::size_t{0}, graph.box.size(), [&](std::size_t b) {
+    if (b % 4096 == 0) throw_if_cancelled(cancellation);
+    for (auto& [w, at_w] : graph.witnesses[b]) {
+      at_w = expand_witness(expand_at_centre(sites[w], graph.frame[b]));
+      add_corners(at_w, sites[w], graph.frame[b]);
+    }
+  });
 }
 
 // Whether a witness of box b certainly dominates site s on it (centre_expansion.h).

@@ -442,6 +442,38 @@ TEST_CASE("vertex writers: text and JSON") {
         std::string::npos);
 }
 
+TEST_CASE("vertex text writer: the same bytes for every thread count, block boundaries included") {
+  const std::vector<Site> sites{{1, 1, 1, 1}, {1, -1, -1, 1}, {-1, 1, -1, 1}, {-1, -1, 1, 1}};
+  const Quadruple_vertices found = vertices_of(make_quadruple({0, 1, 2, 3}, sites));
+  REQUIRE(found.vertices.size() == 1);
+  // Lines of varied length (tie sets of 4 to 7 sites, values of every binade) across several blocks of the
+  // parallel formatting, and sizes just around a block's 2,048 lines.
+  std::mt19937_64 random(17);
+  for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{2047}, std::size_t{2048},
+                                  std::size_t{2049}, std::size_t{20000}}) {
+    CAPTURE(count);
+    Diagram diagram;
+    diagram.site_count = 1000;
+    std::string expected;
+    for (std::size_t k = 0; k < count; ++k) {
+      std::vector<Site_index> tie_set(4 + random() % 4);  // ascending, as a tie set is
+      for (std::size_t j = 0; j < tie_set.size(); ++j) tie_set[j] = static_cast<Site_index>(10 * j + random() % 10);
+      std::array<double, 4> rounded;
+      for (double& x : rounded) x = std::ldexp(static_cast<double>(random() % 1000000) - 500000, static_cast<int>(random() % 200) - 100);
+      for (Site_index s : tie_set) expected += std::to_string(s) + ' ';
+      char number[32];
+      for (int j = 0; j < 4; ++j) expected += std::string(number, write_round_trip(number, rounded[j])) + (j < 3 ? ' ' : '\n');
+      diagram.vertices.push_back({tie_set, found.vertices[0], rounded});
+    }
+    for (const int threads : {1, 2, 8}) {
+      CAPTURE(threads);
+      std::ostringstream text;
+      write_vertices_text(text, diagram, threads);
+      CHECK(text.str() == expected);
+    }
+  }
+}
+
 TEST_CASE("vertex writers: non-finite values and empty lists") {
   const std::vector<Site> sites{{1, 1, 1, 1}, {1, -1, -1, 1}, {-1, 1, -1, 1}, {-1, -1, 1, 1}};
   const Quadruple_vertices found = vertices_of(make_quadruple({0, 1, 2, 3}, sites));
