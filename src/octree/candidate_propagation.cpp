@@ -25,19 +25,34 @@ struct Box_graph {
   std::vector<std::size_t> neighbour_start, neighbours;
   std::vector<std::vector<std::pair<Site_index, Witness_expansion>>> witnesses;
 
+  // Built in parallel over fixed chunks of identifiers, whose rows are then laid end to end in order: the
+  // same graph for every thread count.
   Box_graph(const Seed_partition& partition, const Cancellation* cancellation)
       : box(partition.id_count()),
         frame(partition.id_count()),
         neighbour_start(partition.id_count() + 1, 0),
         witnesses(partition.id_count()) {
-    for (std::size_t id = 0; id < partition.id_count(); ++id) {
-      if (id % 4096 == 0) throw_if_cancelled(cancellation);
-      if (partition.is_box(id)) {
-        box[id] = partition.box(id);
-        frame[id] = frame_of(box[id]);
-        partition.append_face_neighbours(id, neighbours);
+    constexpr std::size_t kChunk = 4096;
+    const std::size_t ids = partition.id_count(), chunks = (ids + kChunk - 1) / kChunk;
+    std::vector<std::vector<std::size_t>> chunk_neighbours(chunks);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+      throw_if_cancelled(cancellation);
+      std::vector<std::size_t>& out = chunk_neighbours[c];
+      for (std::size_t id = c * kChunk; id < std::min(ids, (c + 1) * kChunk); ++id) {
+        if (partition.is_box(id)) {
+          box[id] = partition.box(id);
+          frame[id] = frame_of(box[id]);
+          partition.append_face_neighbours(id, out);
+        }
+        neighbour_start[id + 1] = out.size();  // within the chunk, made absolute below
       }
-      neighbour_start[id + 1] = neighbours.size();
+    });
+    std::size_t offset = 0;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      for (std::size_t id = c * kChunk; id < std::min(ids, (c + 1) * kChunk); ++id) neighbour_start[id + 1] += offset;
+      neighbours.insert(neighbours.end(), chunk_neighbours[c].begin(), chunk_neighbours[c].end());
+      offset += chunk_neighbours[c].size();
+      std::vector<std::size_t>().swap(chunk_neighbours[c]);
     }
   }
 };
