@@ -1,5 +1,9 @@
 #include "diagram/site_set.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -26,9 +30,8 @@ class Hider_tree {
     build(0, sites.size());
   }
 
-  // Sets `hiders` to every site j != i that can hide site i, and some that cannot. Not const: it reuses
-  // the tree's stack.
-  void possible_hiders(Site_index i, std::vector<Site_index>& hiders) {
+  // Sets `hiders` to every site j != i that can hide site i, and some that cannot; `stack` is scratch.
+  void possible_hiders(Site_index i, std::vector<Site_index>& hiders, std::vector<std::size_t>& stack) const {
     hiders.clear();
     const Site& s = sites_[i];
     Rounding_guard guard;
@@ -43,10 +46,10 @@ class Hider_tree {
       }
       return !(distance_squared.inf() > (weight_gap * weight_gap).sup());
     };
-    stack_.assign(1, 0);
-    while (!stack_.empty()) {
-      const std::size_t k = stack_.back();
-      stack_.pop_back();
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
       const Node& node = nodes_[k];
       if (!may_hide(node.lo, node.hi, node.heaviest)) continue;
       if (node.right == 0) {
@@ -56,8 +59,8 @@ class Hider_tree {
           if (j != i && may_hide(c, c, sites_[j].w)) hiders.push_back(j);
         }
       } else {
-        stack_.push_back(node.right);
-        stack_.push_back(k + 1);
+        stack.push_back(node.right);
+        stack.push_back(k + 1);
       }
     }
   }
@@ -104,7 +107,6 @@ class Hider_tree {
   const std::vector<Site>& sites_;
   std::vector<Site_index> order_;
   std::vector<Node> nodes_;
-  std::vector<std::size_t> stack_;  // scratch of possible_hiders
 };
 
 }  // namespace
@@ -115,30 +117,48 @@ class Hider_tree {
 // little over a node, and quadratic only when most sites could hold most others (the sweep in x that this
 // replaced was quadratic as soon as the weight range was a good part of the extent).
 template <class Kernel>
-std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites, const Cancellation* cancellation) {
+std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites, const Cancellation* cancellation,
+                                               int threads) {
   const std::size_t n = sites.size();
   std::vector<Hidden_site> hidden;
   if (n < 2) return hidden;
-  Hider_tree tree(sites);
-  std::vector<Site_index> hiders;
-  for (Site_index i = 0; i < n; ++i) {
-    if ((i & 1023) == 0) throw_if_cancelled(cancellation);
-    std::optional<Hidden_site> found;
-    tree.possible_hiders(i, hiders);
-    for (Site_index j : hiders) {
-      if (!Kernel::hidden(sites[i], i, sites[j], j)) continue;
-      const bool duplicate = sites[i] == sites[j];
-      // Prefer a duplicate over a containing ball, then the smallest index.
-      if (!found || (duplicate && !found->duplicate) || (duplicate == found->duplicate && j < found->hidden_by))
-        found = Hidden_site{i, j, duplicate};
+  const Hider_tree tree(sites);
+  // Each site's verdict depends on it alone: chunks of sites in parallel, each verdict in its own slot.
+  std::vector<std::optional<Hidden_site>> verdict(n);
+  const auto classify = [&](std::size_t first, std::size_t last) {
+    std::vector<Site_index> hiders;
+    std::vector<std::size_t> stack;
+    for (std::size_t k = first; k < last; ++k) {
+      if ((k & 1023) == 0) throw_if_cancelled(cancellation);
+      const auto i = static_cast<Site_index>(k);
+      tree.possible_hiders(i, hiders, stack);
+      std::optional<Hidden_site>& found = verdict[i];
+      for (Site_index j : hiders) {
+        if (!Kernel::hidden(sites[i], i, sites[j], j)) continue;
+        const bool duplicate = sites[i] == sites[j];
+        // Prefer a duplicate over a containing ball, then the smallest index.
+        if (!found || (duplicate && !found->duplicate) || (duplicate == found->duplicate && j < found->hidden_by))
+          found = Hidden_site{i, j, duplicate};
+      }
     }
-    if (found) hidden.push_back(*found);
+  };
+  threads = std::clamp(threads, 1, tbb::this_task_arena::max_concurrency());
+  if (threads == 1) {
+    classify(0, n);
+  } else {
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
+                        [&](const tbb::blocked_range<std::size_t>& range) { classify(range.begin(), range.end()); });
+    });
   }
+  for (const std::optional<Hidden_site>& found : verdict)
+    if (found) hidden.push_back(*found);
   return hidden;
 }
 
-template std::vector<Hidden_site> classify_hidden_sites<Certified_kernel>(const std::vector<Site>&, const Cancellation*);
-template std::vector<Hidden_site> classify_hidden_sites<Floating_kernel>(const std::vector<Site>&, const Cancellation*);
+template std::vector<Hidden_site> classify_hidden_sites<Certified_kernel>(const std::vector<Site>&, const Cancellation*, int);
+template std::vector<Hidden_site> classify_hidden_sites<Floating_kernel>(const std::vector<Site>&, const Cancellation*, int);
 
 std::vector<Site_index> active_sites(std::size_t site_count, const std::vector<Hidden_site>& hidden) {
   std::vector<bool> is_hidden_site(site_count, false);

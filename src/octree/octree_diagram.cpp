@@ -89,7 +89,7 @@ template <class Kernel>
 Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_options& options) {
   Octree_statistics statistics;
   Lap_timer timer;
-  std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites, options.cancellation);
+  std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites, options.cancellation, options.threads);
   const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
   if (active.size() < 4) {
     if (options.regions != nullptr) {  // no box: every site escapes, and they are one set

@@ -34,13 +34,16 @@ std::vector<Hidden_site> every_pair(const std::vector<Site>& sites) {
 
 void check_against_every_pair(const std::vector<Site>& sites) {
   const std::vector<Hidden_site> expected = every_pair(sites);
-  const std::vector<Hidden_site> got = classify_hidden_sites<Certified_kernel>(sites);
-  REQUIRE(got.size() == expected.size());
-  for (std::size_t k = 0; k < got.size(); ++k) {
-    CAPTURE(k);
-    CHECK(got[k].site == expected[k].site);
-    CHECK(got[k].hidden_by == expected[k].hidden_by);
-    CHECK(got[k].duplicate == expected[k].duplicate);
+  for (const int threads : {1, 2}) {
+    CAPTURE(threads);
+    const std::vector<Hidden_site> got = classify_hidden_sites<Certified_kernel>(sites, nullptr, threads);
+    REQUIRE(got.size() == expected.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      CAPTURE(k);
+      CHECK(got[k].site == expected[k].site);
+      CHECK(got[k].hidden_by == expected[k].hidden_by);
+      CHECK(got[k].duplicate == expected[k].duplicate);
+    }
   }
 }
 
@@ -93,6 +96,19 @@ TEST_CASE("hidden sites equal every pair's test on nested clusters, duplicates a
   }
   CHECK(hidden > 10000);
   CHECK(duplicates > 1000);
+}
+
+TEST_CASE("hidden sites in parallel: several chunks of sites, the same verdicts") {
+  // Nested clusters side by side, about 3,000 sites: the parallel classification's chunks are 1,024 sites.
+  std::mt19937_64 random(20261130);
+  std::vector<Site> sites;
+  for (int cluster = 0; sites.size() < 3000; ++cluster) {
+    std::vector<Site> more = nested_cluster(random);
+    for (Site& s : more) s.x += 40.0 * cluster;
+    sites.insert(sites.end(), more.begin(), more.end());
+  }
+  check_against_every_pair(sites);
+  CHECK(classify_hidden_sites<Certified_kernel>(sites).size() > 1000);
 }
 
 TEST_CASE("hidden sites: extremes of the double range, a dozen identical balls, one ball holding all") {
