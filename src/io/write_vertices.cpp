@@ -17,10 +17,10 @@ namespace {
 // Vertices per block: about 150 KB of text.
 constexpr std::size_t kBlockVertices = 2048;
 
-// Appends the lines of vertices [first, last) to text.
-void format_vertices(const std::vector<Diagram_vertex>& vertices, std::size_t first, std::size_t last, std::string& text) {
+// Appends the lines of block b of the vertices to text.
+void format_block(const std::vector<Diagram_vertex>& vertices, std::size_t b, std::string& text) {
   char number[32];
-  for (std::size_t k = first; k < last; ++k) {
+  for (std::size_t k = b * kBlockVertices; k < std::min(vertices.size(), (b + 1) * kBlockVertices); ++k) {
     const Diagram_vertex& v = vertices[k];
     for (const Site_index site : v.tie_set) {
       text.append(number, std::to_chars(number, number + sizeof number, site).ptr);
@@ -43,7 +43,7 @@ void write_vertices_text(std::ostream& out, const Diagram& diagram, int threads)
     std::string text;
     for (std::size_t b = 0; b < blocks; ++b) {
       text.clear();
-      format_vertices(vertices, b * kBlockVertices, std::min(vertices.size(), (b + 1) * kBlockVertices), text);
+      format_block(vertices, b, text);
       out << text;
     }
     return;
@@ -63,8 +63,7 @@ void write_vertices_text(std::ostream& out, const Diagram& diagram, int threads)
             tbb::make_filter<std::size_t, std::string>(tbb::filter_mode::parallel,
                                                        [&](std::size_t b) {
                                                          std::string text;
-                                                         format_vertices(vertices, b * kBlockVertices,
-                                                                         std::min(vertices.size(), (b + 1) * kBlockVertices), text);
+                                                         format_block(vertices, b, text);
                                                          return text;
                                                        }) &
             tbb::make_filter<std::string, void>(tbb::filter_mode::serial_in_order,

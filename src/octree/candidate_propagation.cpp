@@ -34,11 +34,12 @@ struct Box_graph {
         witnesses(partition.id_count()) {
     constexpr std::size_t kChunk = 4096;
     const std::size_t ids = partition.id_count(), chunks = (ids + kChunk - 1) / kChunk;
+    const auto chunk_end = [&](std::size_t c) { return std::min(ids, (c + 1) * kChunk); };
     std::vector<std::vector<std::size_t>> chunk_neighbours(chunks);
     tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
       throw_if_cancelled(cancellation);
       std::vector<std::size_t>& out = chunk_neighbours[c];
-      for (std::size_t id = c * kChunk; id < std::min(ids, (c + 1) * kChunk); ++id) {
+      for (std::size_t id = c * kChunk; id < chunk_end(c); ++id) {
         if (partition.is_box(id)) {
           box[id] = partition.box(id);
           frame[id] = frame_of(box[id]);
@@ -49,7 +50,7 @@ struct Box_graph {
     });
     std::size_t offset = 0;
     for (std::size_t c = 0; c < chunks; ++c) {
-      for (std::size_t id = c * kChunk; id < std::min(ids, (c + 1) * kChunk); ++id) neighbour_start[id + 1] += offset;
+      for (std::size_t id = c * kChunk; id < chunk_end(c); ++id) neighbour_start[id + 1] += offset;
       neighbours.insert(neighbours.end(), chunk_neighbours[c].begin(), chunk_neighbours[c].end());
       offset += chunk_neighbours[c].size();
       std::vector<std::size_t>().swap(chunk_neighbours[c]);
