@@ -279,7 +279,7 @@ struct Builder {
     std::vector<std::pair<std::pair<Site_index, Site_index>, const std::vector<std::size_t>*>> work;
     for (const auto& [pair, faces] : pairs) work.push_back({pair, &faces});
     std::vector<Pair_result> results(work.size());
-    tbb::task_arena arena(std::max(1, options.threads));
+    tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), work.size(), [&](std::size_t k) {
         results[k] = mesh_pair(work[k].first.first, work[k].first.second, *work[k].second);

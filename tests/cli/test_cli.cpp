@@ -178,6 +178,12 @@ TEST_CASE("more threads than the machine has: the same output, and no warning fr
   CHECK(code == 0);
   CHECK(output.find("TBB") == std::string::npos);
   CHECK(output == run({"vertices", input}).out);
+  // mesh made its own arena of the count asked for, and TBB warned (caught on 2026-11-30).
+  const std::string tetra = scratch.write("tetra.balls", kTetrahedron), ply = scratch.path("tetra.ply");
+  const auto [mesh_code, mesh_output] = shell(std::string(APOLLONIUS_BINARY) + " mesh '" + tetra + "' -o '" + ply + "' --threads 64 2>&1");
+  CHECK(mesh_code == 0);
+  CHECK(mesh_output.find("TBB") == std::string::npos);
+  CHECK(fs::exists(ply));
 }
 
 TEST_CASE("a UTF-8 byte-order mark at the start of a text input is skipped") {
