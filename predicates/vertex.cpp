@@ -15,6 +15,12 @@
 namespace apollonius {
 namespace {
 
+// Whether x is finite and at most 2^-40 of its magnitude wide (0 is): an enclosure worth keeping.
+bool is_tight(const Interval& x) {
+  const double magnitude = std::max(std::fabs(x.inf()), std::fabs(x.sup()));
+  return std::isfinite(magnitude) && x.sup() - x.inf() <= magnitude * 0x1p-40;
+}
+
 // An interval holding (a + b sqrt(d)) / denominator. Where a and b sqrt(d) have opposite signs it is taken
 // as (a^2 - b^2 d) / (a - b sqrt(d)), whose numerator is exact and whose denominator adds two numbers of one
 // sign, so that it stays a few ulps wide where the terms cancel (the vertex near its quadruple's sites
@@ -41,8 +47,7 @@ std::array<Interval, 4> enclose(const Vertex_coordinates<Exact>& X, long k = 0) 
       bool tight = true;  // else some part underflowed or overflowed
       for (int j = 0; j < 4; ++j) {
         box[j] = enclose_root_number(X.scaled[j].a, X.scaled[j].b, X.discriminant, root, denominator);
-        const double magnitude = std::max(std::fabs(box[j].inf()), std::fabs(box[j].sup()));
-        tight = tight && std::isfinite(magnitude) && box[j].sup() - box[j].inf() <= magnitude * 0x1p-40;
+        tight = tight && is_tight(box[j]);
       }
       if (tight) return box;
     }
@@ -53,8 +58,19 @@ std::array<Interval, 4> enclose(const Vertex_coordinates<Exact>& X, long k = 0) 
   const Exact d = has_root ? times_power_of_two(X.discriminant, -2 * t) : Exact(0);
   const Interval root = CGAL::sqrt(enclosing_interval(d));
   const Interval denominator = enclosing_interval(times_power_of_two(X.denominator, -n));
+  // An ordinary X_j has parts a and b sqrt(d) about as large as D: the shift that brings D near 1 brings them
+  // near X_j, and their own exponents (each a conversion to Gmpq) are needed only where that is not tight.
+  // Only for the plain box (k = 0): the X_j of a scaled box lie beyond the double range.
+  const Exact down = times_power_of_two(Exact(1), -n), root_down = times_power_of_two(Exact(1), t - n);
   std::array<Interval, 4> box;
   for (int j = 0; j < 4; ++j) {
+    if (k == 0) {
+      const Interval near_x = enclose_root_number(X.scaled[j].a * down, X.scaled[j].b * root_down, d, root, denominator);
+      if (is_tight(near_x)) {
+        box[j] = near_x;
+        continue;
+      }
+    }
     // X_j = (a + b sqrt(d)) 2^(m - n) / D with a, b (a part each) brought near 1 by 2^-m as well.
     const Exact& a = X.scaled[j].a;
     const Exact b = times_power_of_two(X.scaled[j].b, t);
