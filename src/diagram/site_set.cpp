@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 
+#include "diagram/threads.h"
 #include "predicates/kernels.h"
 #include "predicates/rounding_guard.h"
 
@@ -142,7 +143,7 @@ std::vector<Hidden_site> classify_hidden_sites(const std::vector<Site>& sites, c
       }
     }
   };
-  threads = std::clamp(threads, 1, tbb::this_task_arena::max_concurrency());
+  threads = usable_threads(threads);
   if (threads == 1) {
     classify(0, n);
   } else {

@@ -7,6 +7,7 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include "diagram/threads.h"
 #include "io/json_output.h"
 #include "io/round_trip.h"
 
@@ -38,7 +39,7 @@ void format_block(const std::vector<Diagram_vertex>& vertices, std::size_t b, st
 void write_vertices_text(std::ostream& out, const Diagram& diagram, int threads) {
   const std::vector<Diagram_vertex>& vertices = diagram.vertices;
   const std::size_t blocks = (vertices.size() + kBlockVertices - 1) / kBlockVertices;
-  threads = std::clamp(threads, 1, tbb::this_task_arena::max_concurrency());
+  threads = usable_threads(threads);
   if (threads == 1 || blocks <= 1) {
     std::string text;
     for (std::size_t b = 0; b < blocks; ++b) {

@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "diagram/threads.h"
 #include "measure/box_cell_regions.h"
 #include "measure/cell_cubature.h"
 #include "measure/cut_candidates.h"
@@ -38,7 +39,7 @@ std::vector<Cell_measure> measure_cells(const std::vector<Site>& sites, const Di
   cubature.cancellation = options.cancellation;
 
   std::vector<Cell_measure> measures(sites.size());
-  tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
+  tbb::task_arena arena(usable_threads(options.threads));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, sites.size(), [&](std::size_t i) {
       throw_if_cancelled(options.cancellation);  // a throw cancels the parallel loop

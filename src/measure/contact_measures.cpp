@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "diagram/threads.h"
 #include "diagram/site_set.h"
 #include "measure/cell_cubature.h"
 #include "measure/cut_candidates.h"
@@ -92,7 +93,7 @@ Contact_measures measure_contacts(const std::vector<Site>& sites, const Contact_
   result.sas.assign(n, 0), result.sas_error.assign(n, 0), result.volume.assign(n, 0), result.volume_error.assign(n, 0);
   std::vector<std::vector<Cell_measure::Face_area>> faces(n);
   std::vector<std::size_t> directions(n, 0);
-  tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
+  tbb::task_arena arena(usable_threads(options.threads));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t m) {
       throw_if_cancelled(options.cancellation);

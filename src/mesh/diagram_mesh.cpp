@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "diagram/threads.h"
 #include "mesh/edge_samples.h"
 #include "mesh/plane_mesher.h"
 #include "predicates/weighted_distance_at_point.h"
@@ -279,7 +280,7 @@ struct Builder {
     std::vector<std::pair<std::pair<Site_index, Site_index>, const std::vector<std::size_t>*>> work;
     for (const auto& [pair, faces] : pairs) work.push_back({pair, &faces});
     std::vector<Pair_result> results(work.size());
-    tbb::task_arena arena(std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency()));
+    tbb::task_arena arena(usable_threads(options.threads));
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), work.size(), [&](std::size_t k) {
         results[k] = mesh_pair(work[k].first.first, work[k].first.second, *work[k].second);

@@ -11,6 +11,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
 #include "octree/box_refinement.h"
 #include "octree/candidate_propagation.h"
@@ -108,7 +109,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
 
   // Each thread's vertices, in no particular order (assemble_diagram sorts them): one list per seed would
   // take one more copy of them all to gather.
-  const int threads = std::clamp(options.threads, 1, tbb::this_task_arena::max_concurrency());
+  const int threads = usable_threads(options.threads);
   tbb::enumerable_thread_specific<std::vector<Found_vertex>> found([&] {
     std::vector<Found_vertex> list;
     try {

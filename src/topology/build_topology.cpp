@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
 #include "topology/face_boundaries.h"
 #include "topology/face_nesting.h"
@@ -103,7 +104,7 @@ void add_faces_and_cells(const std::vector<Site>& sites, Diagram_topology& topol
   // The pairs' nestings are independent: in parallel, each into its own slot, so the output is the same
   // for every thread count.
   std::vector<Face_grouping> groupings(nested.size());
-  tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
+  tbb::task_arena arena(usable_threads(threads));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, nested.size(), [&](std::size_t k) {
       throw_if_cancelled(cancellation);

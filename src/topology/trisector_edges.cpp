@@ -10,6 +10,7 @@
 #include <string>
 #include <tuple>
 
+#include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
 #include "diagram/flat_lists.h"
 #include "predicates/trisector_predicates.h"
@@ -119,7 +120,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   const std::size_t curves_per_chunk = threads <= 1 ? std::max<std::size_t>(curves, 1) : 256;
   std::vector<std::vector<Diagram_edge>> by_chunk((curves + curves_per_chunk - 1) / curves_per_chunk);
   if (by_chunk.size() == 1) by_chunk.front().reserve(2 * diagram.vertices.size() + 16);
-  tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
+  tbb::task_arena arena(usable_threads(threads));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, by_chunk.size(), [&](std::size_t chunk) {
       std::vector<Departure> departures;

@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
 #include "diagram/flat_lists.h"
 #include "predicates/arc_witness.h"
@@ -314,7 +315,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     e.tie_set = *tie;
     found[c] = std::make_unique<Diagram_edge>(std::move(e));
   };
-  tbb::task_arena arena(std::clamp(threads, 1, tbb::this_task_arena::max_concurrency()));
+  tbb::task_arena arena(usable_threads(threads));
   arena.execute([&] { tbb::parallel_for(std::size_t{0}, triples.size(), test_triple); });
   Vertex_free_parts parts;
   parts.candidate_triples = triples.size();
