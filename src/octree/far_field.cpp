@@ -23,9 +23,9 @@ namespace {
 // Patches are refined at most this often (6 * 8^10 patches at the most, only where sites nearly tie at
 // infinity). A patch whose kept sites stop changing for kStagnationLevels levels, with at most
 // kStagnantSites of them, stops earlier: sites that tie at infinity (or beyond what the root box lets the
-// bound see) are not separated by finer patches, and their quadruples are decided anyway. Twelve, as the
-// octree's stagnant boxes: C(12, 4) = 495 quadruples, recorded once per run of patches that keep the same
-// sites, cost less than the patches down to the depth limit (4^7 per stagnant patch at depth 3).
+// bound see) are not separated by finer patches, and the whole diagram's search takes a few sites per
+// patch as cheaply as fewer (twelve, as the octree's stagnant boxes), while the patches down to the depth
+// limit would cost 4^7 per stagnant patch at depth 3.
 constexpr int kMaxPatchDepth = 10;
 constexpr int kDistanceDepth = 3;
 constexpr int kStagnationLevels = 2;
@@ -67,22 +67,10 @@ Interval interval_sqrt(const Interval& x) {
 
 template <class Kernel>
 class Far_field {
-  // The lifts' span of each set of kept sites met so far (heaviest_lift_basis), and whether the set's
-  // quadruples were recorded. Patches keep few distinct sets, but not in runs: sibling patches alternate
-  // between two or three, and recomputing at each change made 1,895 exact power-lift tests for 11 sites
-  // (tests/data/regression/far_field_span_recomputed_for_alternating_patches.balls). Cleared when it
-  // reaches kRememberedSpans sets, so its memory stays bounded.
-  struct Kept_span {
-    int dimension;
-    std::array<Site_index, 4> basis;
-    bool quadruples_recorded = false;
-  };
-
  public:
-  // With record_quadruples false, the patches give their sites only (the quadruples come from elsewhere).
   Far_field(const std::vector<Site>& sites, const std::array<double, 3>& origin, double radius,
-            bool record_quadruples, const Cancellation* cancellation)
-      : sites_(sites), origin_(origin), radius_(radius), record_(record_quadruples), cancellation_(cancellation) {}
+            const Cancellation* cancellation)
+      : sites_(sites), origin_(origin), radius_(radius), cancellation_(cancellation) {}
 
   // The root patches: a face of the direction cube, tau in [0, sqrt(3) / R] (|y| <= sqrt(3)).
   Patch root(int face) const {
@@ -91,7 +79,7 @@ class Far_field {
 
   // Termination: each call either stops or recurses into 8 children one level deeper, and stops at
   // kMaxPatchDepth. Cost per patch: O(k kWitnesses) interval tests and an O(k log(sets)) lookup; the lift
-  // span costs O(k log k) once per distinct set of kept sites (span_of).
+  // span costs O(k log k) once per distinct set of kept sites (span_dimension).
   void refine(const Patch& p, const std::vector<Site_index>& candidates) {
     throw_if_cancelled(cancellation_);
     std::vector<Site_index> kept = candidates;
@@ -115,8 +103,7 @@ class Far_field {
     }
     // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle) have
     // no vertex among themselves (lift_outside_span.h), wherever they are: nothing to refine.
-    Kept_span& span = span_of(kept);  // valid until a child's span_of may clear the map: not used after them
-    if (span.dimension <= 2) {
+    if (span_dimension(kept) <= 2) {
       record_sites(kept);
       return;
     }
@@ -124,7 +111,6 @@ class Far_field {
     if (kept.size() == 4 || p.depth >= kMaxPatchDepth ||
         (stagnant >= kStagnationLevels && kept.size() <= kStagnantSites)) {
       record_sites(kept);
-      if (record_ && !span.quadruples_recorded) record_quadruples(kept, span);
       return;
     }
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2, taum = p.tau0 + (p.tau1 - p.tau0) / 2;
@@ -135,7 +121,6 @@ class Far_field {
              kept);
   }
 
-  std::vector<Quadruple_key> take_quadruples() { return std::move(quadruples_); }
   // Each run of patches keeping the same sites adds them once (duplicates are removed by far_vertices).
   void record_sites(const std::vector<Site_index>& kept) {
     if (patch_sites_.empty() || patch_sites_.back() != kept) patch_sites_.push_back(kept);
@@ -218,63 +203,26 @@ class Far_field {
     return best;
   }
 
-  // Every vertex outside the root box in this patch's cone has its tie set among `kept`, so it is a vertex
-  // of one of their quadruples (sorted; kept is ascending).
-  // `span`: the lifts' span of kept, of dimension 3 or more (refine() stops below).
-  void record_quadruples(const std::vector<Site_index>& kept, Kept_span& span) {
-    // Neighbouring patches at the depth limit mostly keep the same sites: each set is recorded once while
-    // span_of remembers it, and the list is compacted whenever it doubles, so it holds at most twice the
-    // distinct quadruples and costs one sort per doubling
-    // (tests/data/regression/octree_far_field_sorts_copies_*).
-    span.quadruples_recorded = true;
-    record_distinct(kept, span);
-    if (quadruples_.size() >= std::max(kCompactionFloor, 2 * compacted_size_)) {
-      cancellable_sort(quadruples_.begin(), quadruples_.end(), cancellation_);
-      quadruples_.erase(std::unique(quadruples_.begin(), quadruples_.end()), quadruples_.end());
-      compacted_size_ = quadruples_.size();
-    }
-  }
-
-  void record_distinct(const std::vector<Site_index>& kept, const Kept_span& span) {
-    // Sites whose lifts span at most a plane (a lattice face of one weight, equal balls on one circle)
-    // have no vertex among themselves (lift_outside_span.h): C(k, 4) quadruples saved for O(k) predicates.
-    // Spanning a 3-space with their points (L, h) too (power_lift_outside_span.h: balls on a circle and
-    // one more ball, whose ties lie on the circle's axis), every quadruple of them with roots has the same
-    // line and polynomial: the heaviest basis gives every valid root (lift_span.h). O(k) predicates once
-    // per distinct set of kept sites.
-    if (span.dimension == 3 && kept.size() > 4) {
-      const std::array<Site_index, 4>& basis = span.basis;
-      const std::array<Site, 4> lifted = {sites_[basis[0]], sites_[basis[1]], sites_[basis[2]], sites_[basis[3]]};
-      if (std::none_of(kept.begin(), kept.end(), [&](Site_index s) { return Kernel::outside_power_lift_span(lifted, sites_[s]); })) {
-        quadruples_.push_back(basis);
-        return;
-      }
-    }
-    const std::size_t k = kept.size();
-    for (std::size_t a = 0; a < k; ++a)
-      for (std::size_t b = a + 1; b < k; ++b)
-        for (std::size_t c = b + 1; c < k; ++c)
-          for (std::size_t d = c + 1; d < k; ++d) quadruples_.push_back({kept[a], kept[b], kept[c], kept[d]});
-  }
-
   const std::vector<Site>& sites_;
-  static constexpr std::size_t kCompactionFloor = 1 << 16;
-  std::size_t compacted_size_ = 0;         // the list's size after its last compaction (all distinct then)
+  // The dimension of the lifts' span of each set of kept sites met so far (heaviest_lift_basis). Patches
+  // keep few distinct sets, but not in runs: sibling patches alternate between two or three, and
+  // recomputing at each change made 1,895 exact power-lift tests for 11 sites
+  // (tests/data/regression/far_field_span_recomputed_for_alternating_patches.balls). Cleared when it
+  // reaches kRememberedSpans sets, so its memory stays bounded.
   static constexpr std::size_t kRememberedSpans = 4096;
-  std::map<std::vector<Site_index>, Kept_span> spans_;
-  Kept_span& span_of(const std::vector<Site_index>& kept) {
-    const auto found = spans_.find(kept);
-    if (found != spans_.end()) return found->second;
-    if (spans_.size() >= kRememberedSpans) spans_.clear();
-    Kept_span span;
-    span.dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), span.basis);
-    return spans_.emplace(kept, span).first->second;
+  std::map<std::vector<Site_index>, int> span_dimensions_;
+  int span_dimension(const std::vector<Site_index>& kept) {
+    const auto found = span_dimensions_.find(kept);
+    if (found != span_dimensions_.end()) return found->second;
+    if (span_dimensions_.size() >= kRememberedSpans) span_dimensions_.clear();
+    std::array<Site_index, 4> basis;
+    const int dimension = heaviest_lift_basis<Kernel>(sites_, kept.begin(), kept.end(), basis);
+    span_dimensions_.emplace(kept, dimension);
+    return dimension;
   }
   std::array<double, 3> origin_;
   double radius_;
-  bool record_;
   const Cancellation* cancellation_;
-  std::vector<Quadruple_key> quadruples_;
   std::vector<std::vector<Site_index>> patch_sites_;
 };
 
@@ -332,22 +280,6 @@ bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, cons
   return true;
 }
 
-// Whether lifted_triangulation.h's condition holds for every vertex outside R among the escaping sites: a
-// tie site i of a vertex x there has distance t = |x - p_i| - w_i > radius - |p_i - O| - w_i, so t + w_j >= 0
-// for every j when the least such bound plus the least weight is >= 0. Outward-rounded intervals.
-bool lifts_cover_far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,
-                              const std::array<double, 3>& origin, double radius) {
-  const CGAL::Protect_FPU_rounding<true> protect(CGAL_FE_UPWARD);
-  Interval least_distance(radius), least_weight(sites[escaping.front()].w);
-  for (Site_index s : escaping) {
-    const Site& p = sites[s];
-    const Interval dx = Interval(p.x) - origin[0], dy = Interval(p.y) - origin[1], dz = Interval(p.z) - origin[2];
-    least_distance = CGAL::min(least_distance, Interval(radius) - CGAL::sqrt(dx * dx + dy * dy + dz * dz) - p.w);
-    least_weight = CGAL::min(least_weight, Interval(p.w));
-  }
-  return (least_distance + least_weight).inf() >= 0;
-}
-
 }  // namespace
 
 template <class Kernel>
@@ -359,36 +291,26 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
     if (escaping.size() >= 2) none.patch_sites.push_back(escaping);
     return none;
   }
-  // Candidate quadruples: the 3-faces of the escaping sites' lifted triangulation where it covers every
-  // vertex outside R (lifted_triangulation.h): O(E log E) for E escaping sites, whatever their ties at
-  // infinity. Otherwise (weights far larger than the sites' spread) the patches' sites enumerated.
-  const bool lifted = lifts_cover_far_vertices(sites, escaping, origin, radius);
-  Lifted_triangulation lifts;
-  if (lifted) lifts = lifted_triangulation(sites, escaping, cancellation);
-  std::vector<Quadruple_key> quadruples = std::move(lifts.quadruples);
+  // Candidate quadruples: the 3-faces of the escaping sites' lifted triangulation, which cover every vertex
+  // (lifted_triangulation.h): O(E log E) for E escaping sites, whatever their ties at infinity.
+  Lifted_triangulation lifts = lifted_triangulation(sites, escaping, cancellation);
+  const std::vector<Quadruple_key>& quadruples = lifts.quadruples;
   std::vector<std::vector<Site_index>> patch_sites;
-  if (!lifted || with_patch_sites) {
-    // The six faces of the direction cube are refined independently; neighbouring patches share most of
-    // their quadruples, so those are collected first and each is decided once.
-    std::vector<std::vector<Quadruple_key>> by_face(6);
+  if (with_patch_sites) {
     std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
     tbb::parallel_for(0, 6, [&](int face) {
-      Far_field<Kernel> field(sites, origin, radius, !lifted, cancellation);
+      Far_field<Kernel> field(sites, origin, radius, cancellation);
       field.refine(field.root(face), escaping);
-      by_face[face] = field.take_quadruples();
       sites_by_face[face] = field.take_patch_sites();
     });
     for (auto& face : sites_by_face)
       for (auto& kept : face) patch_sites.push_back(std::move(kept));
     cancellable_sort(patch_sites.begin(), patch_sites.end(), cancellation);
     patch_sites.erase(std::unique(patch_sites.begin(), patch_sites.end()), patch_sites.end());
-    for (const auto& face : by_face) quadruples.insert(quadruples.end(), face.begin(), face.end());
-    cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
-    quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
   }
 
   // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
-  // point there), with its tie set among them: through the lifts' edges where they cover it.
+  // point there), with its tie set among them through the lifts' edges.
   const auto outside_root = [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); };
   std::vector<std::vector<Found_vertex>> found(quadruples.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size()), [&](const tbb::blocked_range<std::size_t>& range) {
@@ -396,11 +318,6 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
     std::vector<Site_index> tie;
     for (std::size_t q = range.begin(); q != range.end(); ++q) {
       throw_if_cancelled(cancellation);
-      if (!lifted) {
-        const std::vector<Site_index> quadruple(quadruples[q].begin(), quadruples[q].end());
-        decide_quadruples<Kernel>(sites, quadruple, escaping, outside_root, found[q], 0);
-        continue;
-      }
       for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(quadruples[q], sites)).vertices)
         if (outside_root(v) && tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie))
           append_unique<Kernel>(found[q], 0, {tie, v});

@@ -1,12 +1,12 @@
 // The vertices far outside the sites: those outside the octree's root box R.
 //
-// Their tie sets are among the escaping sites (those owning a point outside R). When every such vertex
-// has t + w_j >= 0 for all of them (far_vertices checks it from R's radius), each is a root of a 3-face of
-// the escaping sites' lifted triangulation (lifted_triangulation.h): O(E log E) for E escaping sites, even
-// when hundreds of them tie at infinity to within an ulp (a lattice face), where the patches below could
-// not separate them and enumerated C(k, 4) quadruples per patch. The patches still give the sites owning
-// each part of the far region (the whole diagram's vertex-free search uses them) and, where the condition
-// fails (weights far larger than the sites' spread), the quadruples.
+// Their tie sets are among the escaping sites (those owning a point outside R, none hidden), and each is a
+// root of a 3-face of the escaping sites' lifted triangulation (lifted_triangulation.h): O(E log E) for E
+// escaping sites, even when hundreds of them tie at infinity to within an ulp (a lattice face), and
+// whatever their weights
+// (tests/data/regression/far_field_enumerated_39k_quadruples_of_34_escaping_sites_to_4e265.balls).
+// The patches below give the sites owning each part of the far region, which the whole diagram's
+// vertex-free search uses.
 //
 // R contains the ball of radius R about O. A point x outside R is x = O + r y with y on a face of the cube
 // [-1, 1]^3 and r >= R / |y|. For a site w, x - p_w = r v with v = y - tau (p_w - O), tau = 1 / r in
@@ -17,10 +17,8 @@
 // one at O. The far region is cut into patches: squares of directions on the faces of the cube times
 // intervals of tau, halved in all three for the first levels (so that sites owning points only at finite
 // distance, like a lattice face's lighter balls, leave the patches beyond them), then in the directions
-// only. Refinement stops at 3 remaining sites or sites whose lifts span at most a plane (no vertex can lie
-// among them), or at a maximum depth, where every vertex outside R in the patch has its tie set among the
-// remaining sites (their quadruples are enumerated). Every candidate quadruple is decided exactly against
-// the escaping sites. All bounds use outward-rounded intervals.
+// only. Refinement stops at 4 remaining sites or sites whose lifts span at most a plane (no vertex can lie
+// among them), or at a maximum depth. All bounds use outward-rounded intervals.
 #pragma once
 
 #include <array>
@@ -43,8 +41,8 @@ struct Far_field_vertices {
 };
 
 // Every vertex of the diagram outside the closed root box, with its tie set. Kernel: kernels.h. `escaping`
-// must contain every site that owns a point outside the box, and the root box must contain the ball of
-// radius `radius` about `origin`. patch_sites is filled when with_patch_sites holds (else it may stay
+// must contain every site that owns a point outside the box and no hidden site (site_set.h), and the root
+// box must contain the ball of radius `radius` about `origin`. patch_sites is filled when with_patch_sites holds (else it may stay
 // empty). Checks cancellation (cancellation.h) at each patch and each quadruple.
 template <class Kernel>
 Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vector<Site_index>& escaping,

@@ -3,10 +3,12 @@
 // Site i lifts to q_i = (p_i, w_i) in R^4 with power weight 2 w_i^2. For z = (x, t),
 //     |x - p_i|^2 - (t + w_i)^2 = |x|^2 - t^2 - L_i(z),  L_i(z) = 2 x.p_i + 2 t w_i + w_i^2 - |p_i|^2,
 // and |z - q_i|^2 - 2 w_i^2 = |z|^2 - L_i(z), so the power diagram of the lifts is the upper envelope of
-// the L_i. Let x be a vertex of the Apollonius diagram of a set S at distance t, with tie set T, such that
-// t + w_j >= 0 for every j in S. Then L_i(z) = |x|^2 - t^2 for i in T, and for j in S outside T,
-// |x - p_j| > t + w_j >= 0 gives L_j(z) < |x|^2 - t^2: z lies on the face of the power diagram whose
-// maximisers are exactly T, dual to the cell conv{q_i : i in T} of the regular subdivision. A vertex has
+// the L_i. Let x be a vertex of the Apollonius diagram of a set S of sites, none hidden (is_hidden.h), at
+// distance t, with tie set T. Then L_i(z) = |x|^2 - t^2 for i in T, and L_j(z) < |x|^2 - t^2 for j in S
+// outside T, i.e. |x - p_j| > |t + w_j|: where t + w_j >= 0 because |x - p_j| - w_j > t; where t + w_j < 0
+// because otherwise, for i in T (t = |x - p_i| - w_i), |p_j - p_i| <= |x - p_j| + |x - p_i| <= w_i - w_j
+// and ball j would lie in ball i. So z lies on the face of the power diagram whose maximisers are exactly T,
+// dual to the cell conv{q_i : i in T} of the regular subdivision, with no condition on t. A vertex has
 // lifts spanning 3 or more dimensions (lift_outside_span.h), so that cell holds a 3-simplex of any regular
 // triangulation refining the subdivision, as CGAL's (symbolically perturbed) one does: four sites of T,
 // affinely independent, of which x is a root. Hence every such vertex is a root of a quadruple spanning a
