@@ -26,10 +26,10 @@
 namespace apollonius {
 namespace {
 
-// The root box reaches at least this many times G's size in every direction (more for weights far
-// larger than the sites' spread: seed_partition.h); beyond it, far_field.h decides. Near a flat face of
-// sites (a lattice), the cells beyond it are parallel prisms that only the far field separates: the boxes
-// between G and R cost about R / G per face (docs/benchmarks.md, "the root box at twice G").
+// The root box reaches at least this many times G's size in every direction (seed_partition.h); beyond
+// it, far_field.h decides. Near a flat face of sites (a lattice), the cells beyond it are parallel prisms
+// that only the far field separates: the boxes between G and R cost about R / G per face
+// (docs/benchmarks.md, "the root box at twice G").
 constexpr double kFarFieldScale = 2;
 
 // Each thread's list of vertices starts with room for this many per site, so that it is never moved while

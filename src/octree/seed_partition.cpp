@@ -12,9 +12,6 @@ namespace {
 // with more candidates each, and the refinement makes up for them at less cost than propagation over more
 // (docs/benchmarks.md, "A quarter of a seed cube per site").
 constexpr double kCubesPerSite = 0.25;
-// The root box grows for the weights' range up to this many times its least radius (16 times 4 half-extents:
-// the radius of far_field_scale 32, which every input got before 2026-11-28).
-constexpr double kWeightScaleLimit = 16;
 // Lattice indices stay below 2^50 in magnitude, so that k 2^l s is exact and sums of indices do not
 // overflow; the cube side stays above 2^-40 times the extent of the sites.
 constexpr double kLargestIndex = 0x1p50;
@@ -57,14 +54,12 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
                                double far_field_scale) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   std::array<double, 3> lo{kInfinity, kInfinity, kInfinity}, hi{-kInfinity, -kInfinity, -kInfinity};
-  double w_lo = kInfinity, w_hi = -kInfinity;
   for (Site_index i : active) {
     const double c[3] = {sites[i].x, sites[i].y, sites[i].z};
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
-    w_lo = std::min(w_lo, sites[i].w), w_hi = std::max(w_hi, sites[i].w);
   }
   const double side = cube_side(lo, hi, active.size());
-  build_levels(lo, hi, side, w_hi - w_lo, far_field_scale);
+  build_levels(lo, hi, side, far_field_scale);
   // The offset needs ten bits below s on top of the largest index of the first build, which the second
   // exceeds by a cube of each level at most.
   double largest_index = 0;
@@ -72,7 +67,7 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
     largest_index = std::max({largest_index, std::fabs(root_box_.lo[a]) / side, std::fabs(root_box_.hi[a]) / side});
   if (largest_index < kLargestOffsetIndex) {
     offset_ = kOffsetFraction * side;
-    build_levels(lo, hi, side, w_hi - w_lo, far_field_scale);
+    build_levels(lo, hi, side, far_field_scale);
   }
 
   level_offset_.push_back(0);
@@ -84,7 +79,7 @@ Seed_partition::Seed_partition(const std::vector<Site>& sites, const std::vector
 }
 
 void Seed_partition::build_levels(const std::array<double, 3>& lo, const std::array<double, 3>& hi, double side,
-                                  double weight_range, double far_field_scale) {
+                                  double far_field_scale) {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   levels_.clear();
   unit_.clear();
@@ -108,15 +103,9 @@ void Seed_partition::build_levels(const std::array<double, 3>& lo, const std::ar
   }
   double half_extent = 0;
   for (int a = 0; a < 3; ++a) half_extent = std::max(half_extent, grid_box.hi[a] - origin_[a]);
-  // far_field.h decides beyond R by the lifted triangulation when t + w_j >= 0 there, which holds once R
-  // exceeds |p_i - O| + w_i - w_min for every site (far_field.cpp checks it exactly; this rounded estimate
-  // with a factor 2 only sizes R): R grows for the weights' range up to kWeightScaleLimit times the least
-  // radius, beyond which the far field's patches decide.
-  const double minimum = 2 * far_field_scale * half_extent;
-  const double for_weights = 2 * (std::sqrt(3.0) * half_extent + weight_range);
-  const double needed = std::isfinite(for_weights) && for_weights <= kWeightScaleLimit * minimum
-                            ? std::max(minimum, for_weights)
-                            : minimum;
+  // far_field.h decides beyond R whatever the weights (lifted_triangulation.h), so R depends on the
+  // centres only.
+  const double needed = 2 * far_field_scale * half_extent;
 
   // Shells: level l + 1 has cubes twice as large, reaches at least one of them beyond level l, and is
   // aligned to the cubes of level l + 2.

@@ -23,8 +23,7 @@ namespace apollonius {
 // four cubes of level l - 1.
 class Seed_partition {
  public:
-  // R contains the ball about G's centre of radius 2 * far_field_scale * h (h: G's largest half-extent),
-  // and of radius 2 (sqrt(3) h + w_max - w_min) when that is at most 16 times larger (seed_partition.cpp).
+  // R contains the ball about G's centre of radius 2 * far_field_scale * h (h: G's largest half-extent).
   // Throws std::overflow_error when R exceeds the double range.
   Seed_partition(const std::vector<Site>& sites, const std::vector<Site_index>& active, double far_field_scale);
 
@@ -57,7 +56,7 @@ class Seed_partition {
 
   // Levels, root box, origin and radius for the current offset_.
   void build_levels(const std::array<double, 3>& lo, const std::array<double, 3>& hi, double side,
-                    double weight_range, double far_field_scale);
+                    double far_field_scale);
   double bound(double unit, std::int64_t k) const { return static_cast<double>(k) * unit + offset_; }
   std::size_t id_of(int level, const Index3& k) const;
   Index3 index_of(std::size_t id, int& level) const;
