@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "octree/lift_span.h"
+#include "octree/lifted_triangulation.h"
 #include "predicates/box_distance.h"
 #include "predicates/kernels.h"
 #include "predicates/rounding_guard.h"
@@ -70,9 +71,18 @@ constexpr int kStagnationToClassify = 1;
 // 885 levels of about 1,800 boxes (1.6 million; tests/data/regression/octree_depth_*). Complexity: below
 // the first box of at most kStagnantCandidates on a path, a huge box is refined only if its count
 // dropped, so at most kStagnantCandidates - kLeafCandidates huge levels are refined there, whatever the
-// spread of scales. A cluster of more candidates still descends one level per binade (docs/design.md).
+// spread of scales. A huge box of more candidates, up to kLiftedLeafCandidates, is settled once its count
+// did not drop for kStagnationLevels, its leaf decided from the 3-faces of their lifted triangulation
+// (decide_lifted_leaf: O(k) to O(k^2) quadruples, where C(k, 4) would not end): about a cluster 1e265
+// times smaller than the root, 8 boxes kept the same 37 candidates for 880 levels of about 500 boxes each
+// (tests/data/regression/octree_440k_boxes_about_cluster_of_37_to_3e266.balls). So below the first box of
+// at most kLiftedLeafCandidates on a path, at most 2 (64 - 6) huge levels are refined. A cluster of more
+// still descends one level per binade (docs/design.md).
 constexpr int kStagnationToSettleHuge = 1;
 constexpr std::size_t kStagnantCandidates = 12;
+constexpr std::size_t kLiftedLeafCandidates = 64;
+// Neighbouring huge boxes about one cluster keep the same candidates: their 3-faces are remembered.
+constexpr std::size_t kRememberedLiftedLeaves = 64;
 constexpr double kTinyBox = 64;
 constexpr int kMaxDepth = 2200;
 
@@ -182,6 +192,13 @@ void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int 
                          (kept <= kStagnantCandidates &&
                           (stagnant >= kStagnationLevels ||
                            (stagnant >= kStagnationToSettleHuge && huge_against_candidates(box, end))));
+    if (!settled && kept > kStagnantCandidates && kept <= kLiftedLeafCandidates && stagnant >= kStagnationLevels &&
+        huge_against_candidates(box, end)) {
+      record();
+      decide_lifted_leaf(box, end, out);
+      stack_.resize(end);
+      return;
+    }
     if (!settled && kept > kLeafCandidates && tiny_against_candidates(box, end)) {
       const Tie tie = classify_tie(end, stagnant >= kStagnationToClassify);
       if (tie != Tie::none) {
@@ -325,6 +342,25 @@ void Box_refinement<Kernel>::decide_leaf(const Axis_box& box, std::size_t first,
           else
             decide(quadruple, cache_.vertices_of_quadruple(quadruple, sites_));
         }
+}
+
+// Every vertex in the box is a vertex of the candidates' own diagram (they contain every site owning a
+// point of the closed box, and none is hidden), so it is a root of a 3-face of their lifted triangulation
+// (lifted_triangulation.h), located and given its tie set as in decide_leaf. Cost: the triangulation of k
+// lifts, O(k log k) in general position, and O(k) conflict tests per root in the box.
+template <class Kernel>
+void Box_refinement<Kernel>::decide_lifted_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
+  const std::size_t k = stack_.size() - first, leaf_start = out.size();
+  ++counts_.leaves;
+  counts_.leaf_candidates += k;
+  std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
+  const std::vector<Site_index> leaf(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
+  if (lifted_faces_.size() >= kRememberedLiftedLeaves) lifted_faces_.clear();
+  auto faces = lifted_faces_.find(leaf);
+  if (faces == lifted_faces_.end()) faces = lifted_faces_.emplace(leaf, lifted_triangulation(sites_, leaf, cancellation_).quadruples).first;
+  for (const std::array<Site_index, 4>& quadruple : faces->second)
+    keep_roots_in_box(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)), 0, box, leaf.data(), k,
+                      leaf_start, out, false);
 }
 
 // Tried on a tiny box of more than kLeafCandidates candidates K that did not drop. The lifts' span is

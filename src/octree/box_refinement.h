@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <vector>
 
 #include "diagram/cancellation.h"
@@ -64,6 +65,8 @@ class Box_refinement {
   bool tiny_against_candidates(const Axis_box& box, std::size_t first) const;
   bool huge_against_candidates(const Axis_box& box, std::size_t first) const;
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
+  // The same, for a box of many candidates, from their lifted triangulation's 3-faces.
+  void decide_lifted_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
   // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), or, if
   // at_point_too, their lifts and power lifts a 3-space (`on_one_line`: every tie among them lies on one
   // line, the heaviest basis's, which line_basis_ then holds), or all of them tie at one point, which
@@ -99,6 +102,8 @@ class Box_refinement {
   // The points decide_leaf has decided in its leaf that are equidistant from five or more of its candidates,
   // with those candidates (ascending): each is a root of every quadruple among them.
   std::vector<Found_vertex> decided_here_;
+  // The lifted triangulation's 3-faces of each candidate set decide_lifted_leaf met, a bounded number.
+  std::map<std::vector<Site_index>, std::vector<std::array<Site_index, 4>>> lifted_faces_;
 };
 
 }  // namespace apollonius
