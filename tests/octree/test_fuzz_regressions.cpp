@@ -37,6 +37,15 @@ Octree_statistics check_octree_equals_brute_force(const std::string& name, const
   return statistics;
 }
 
+// For the regressions about the octree's boxes: equal to the brute force within `seconds` (or
+// APOLLONIUS_REGRESSION_TIME_LIMIT), with fewer than `boxes` boxes.
+void check_octree_boxes_below(const std::string& name, std::size_t boxes, double seconds) {
+  Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", seconds), name);
+  const Octree_statistics statistics = check_octree_equals_brute_force(name);
+  CHECK(statistics.boxes < boxes);
+  MESSAGE(name << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
+}
+
 }  // namespace
 
 // Fixed by running the octree on sites scaled to a moderate extent (scale_normalization.h).
@@ -214,13 +223,8 @@ TEST_CASE("regression: octree_far_field_sorts_copies_for_11_sites_from_5e-324_to
 // along one axis repeat at every scale. Fixed by the sharp centre value (sharp_centre_value.h) and by
 // settling stagnant boxes of at most 12 candidates at any size (box_refinement.cpp): 72 to 984 boxes.
 TEST_CASE("regression: octree_boxes_explode_for_huge_sphere_near_cluster") {
-  for (int k = 1; k <= 6; ++k) {
-    const std::string name = "octree_boxes_explode_for_huge_sphere_near_cluster_" + std::to_string(k) + ".balls";
-    Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);
-    const Octree_statistics statistics = check_octree_equals_brute_force(name);
-    CHECK(statistics.boxes < 20000);
-    MESSAGE(name << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
-  }
+  for (int k = 1; k <= 6; ++k)
+    check_octree_boxes_below("octree_boxes_explode_for_huge_sphere_near_cluster_" + std::to_string(k) + ".balls", 20000, 20);
 }
 
 // fuzz_vertices with the 2 s limit, 2026-11-28 (sixth stop): 11 sites, two of them 1.2e268 away. The far
@@ -243,12 +247,8 @@ TEST_CASE("regression: far_field_span_recomputed_for_alternating_patches") {
 // 0.3 s in release, up to 4 s under the sanitizers). Settling after 2 levels: 1,286 to 2,061.
 TEST_CASE("regression: octree_stagnant_boxes_along_bisector_of_subnormal_cluster") {
   for (const char* name : {"octree_stagnant_boxes_along_bisector_of_subnormal_cluster_1.balls",
-                           "octree_stagnant_boxes_along_bisector_of_subnormal_cluster_2.balls"}) {
-    Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 20), name);
-    const Octree_statistics statistics = check_octree_equals_brute_force(name);
-    CHECK(statistics.boxes < 5000);
-    MESSAGE(std::string(name) << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
-  }
+                           "octree_stagnant_boxes_along_bisector_of_subnormal_cluster_2.balls"})
+    check_octree_boxes_below(name, 5000, 20);
 }
 
 // Open (issues 20 and 21; tests/data/open): 12 sites from 5e-324 to 1.6e266, whose exact stages work on
@@ -281,10 +281,6 @@ TEST_CASE("regression: far_field_enumerated_39k_quadruples_of_34_escaping_sites_
 // candidates is now decided from their lifted triangulation (box_refinement.cpp): 1,783 and 3,468 boxes.
 TEST_CASE("regression: octree boxes about a cluster of more than 12 candidates far smaller than the root") {
   for (const char* name : {"octree_244k_boxes_for_cluster_of_19_and_balls_to_1e267.balls",
-                           "octree_440k_boxes_about_cluster_of_37_to_3e266.balls"}) {
-    Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 60), name);
-    const Octree_statistics statistics = check_octree_equals_brute_force(name);
-    CHECK(statistics.boxes < 20000);
-    MESSAGE(std::string(name) << ": " << statistics.boxes << " boxes, " << limit.stop() << " s");
-  }
+                           "octree_440k_boxes_about_cluster_of_37_to_3e266.balls"})
+    check_octree_boxes_below(name, 20000, 60);
 }
