@@ -355,9 +355,11 @@ void Box_refinement<Kernel>::decide_lifted_leaf(const Axis_box& box, std::size_t
   counts_.leaf_candidates += k;
   std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
   const std::vector<Site_index> leaf(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
-  if (lifted_faces_.size() >= kRememberedLiftedLeaves) lifted_faces_.clear();
   auto faces = lifted_faces_.find(leaf);
-  if (faces == lifted_faces_.end()) faces = lifted_faces_.emplace(leaf, lifted_triangulation(sites_, leaf, cancellation_).quadruples).first;
+  if (faces == lifted_faces_.end()) {
+    if (lifted_faces_.size() >= kRememberedLiftedLeaves) lifted_faces_.clear();
+    faces = lifted_faces_.emplace(leaf, lifted_triangulation(sites_, leaf, cancellation_).quadruples).first;
+  }
   for (const std::array<Site_index, 4>& quadruple : faces->second)
     keep_roots_in_box(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)), 0, box, leaf.data(), k,
                       leaf_start, out, false);

@@ -293,7 +293,7 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   }
   // Candidate quadruples: the 3-faces of the escaping sites' lifted triangulation, which cover every vertex
   // (lifted_triangulation.h): O(E log E) for E escaping sites, whatever their ties at infinity.
-  Lifted_triangulation lifts = lifted_triangulation(sites, escaping, cancellation);
+  const Lifted_triangulation lifts = lifted_triangulation(sites, escaping, cancellation);
   const std::vector<Quadruple_key>& quadruples = lifts.quadruples;
   std::vector<std::vector<Site_index>> patch_sites;
   if (with_patch_sites) {
