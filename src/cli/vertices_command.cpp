@@ -41,6 +41,9 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << s.escaping_sites << "\nboxes " << s.boxes << "\nleaves " << s.leaves << "\nleaf_candidates "
       << s.leaf_candidates << "\nquadruples " << s.quadruples << "\ndistinct_quadruples " << s.distinct_quadruples
       << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
+  // The lifted fallback (octree_diagram.h, step 5), only when it ran.
+  if (s.lifted_fallback)
+    err << "lifted fallback\nlifted_seconds " << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
 }
 
 int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
@@ -61,9 +64,9 @@ int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
   const Site_input input = read_sites(command.input, command.diagram.read_options);
   reset_predicate_statistics();
   Octree_statistics octree_statistics;
-  Diagram diagram = brute_force ? brute_force_diagram(input.sites)
-                                : octree_diagram(input.sites, Octree_options{command.diagram.threads,
-                                                                             &octree_statistics, arithmetic});
+  Octree_options options{command.diagram.threads, &octree_statistics, arithmetic};
+  if (command.algorithm == "lifted") options.box_budget = 0;  // straight to step 5 (octree_diagram.h)
+  Diagram diagram = brute_force ? brute_force_diagram(input.sites) : octree_diagram(input.sites, options);
   if (box) restrict_to_box(diagram, *box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
 
@@ -94,8 +97,10 @@ Command_run add_vertices_command(CLI::App& app) {
   add_output_option(*sub, command->output);
   sub->add_option("--format", command->format, "text or json (default: json for an OUT ending in .json)")
       ->check(CLI::IsMember({"text", "json"}));
-  sub->add_option("--algorithm", command->algorithm, "octree (paper section 5.2) or brute (the O(n^5) reference)")
-      ->check(CLI::IsMember({"octree", "brute"}))
+  sub->add_option("--algorithm", command->algorithm,
+                  "octree (paper section 5.2; it turns to lifted past 512 boxes per site), lifted (the 3-faces of\n"
+                  "the lifted regular triangulation in R^4), or brute (the O(n^5) reference)")
+      ->check(CLI::IsMember({"octree", "lifted", "brute"}))
       ->capture_default_str();
   sub->add_option("--arith", command->arithmetic,
                   "certified, or float: the octree in plain doubles, uncertified, for comparison only")

@@ -129,24 +129,6 @@ bool known_on_bound(const Vertex& v, const Axis_box& box) {
   return false;
 }
 
-// Whether two vertices certainly differ: their interval enclosures are disjoint.
-bool certainly_apart(const Vertex& u, const Vertex& v) {
-  const std::array<Interval, 4> a = u.point_interval(), b = v.point_interval();
-  for (int j = 0; j < 4; ++j)
-    if (a[j].sup() < b[j].inf() || b[j].sup() < a[j].inf()) return true;
-  return false;
-}
-
-// The index among `roots` of the root equal to u, given that u is a root whenever the roots are discrete
-// (none when they are not); the intervals tell most apart, compare the rest.
-template <class Kernel>
-std::size_t root_equal_to(const Vertex& u, const Quadruple_vertices& roots) {
-  if (roots.vertices.size() <= 1) return 0;
-  if (certainly_apart(roots.vertices[0], u)) return 1;
-  if (certainly_apart(roots.vertices[1], u)) return 0;
-  return Kernel::compare(roots.vertices[0], u) == Sign::ZERO ? 0 : 1;
-}
-
 }  // namespace
 
 template <class Kernel>
@@ -168,7 +150,10 @@ template <class Kernel>
 void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int depth, int stagnant,
                             std::vector<Found_vertex>& out) {
   const std::size_t end = stack_.size();
-  if (++counts_.boxes % kBoxesPerCancellationCheck == 0) throw_if_cancelled(cancellation_);
+  if (++counts_.boxes % kBoxesPerCancellationCheck == 0) {
+    throw_if_cancelled(cancellation_);
+    if (budget_ != nullptr) budget_->spend(kBoxesPerCancellationCheck);
+  }
   // A seed box's candidates were just filtered by the propagation, against the same kind of witnesses.
   if (depth == 0)
     stack_.insert(stack_.end(), stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.begin() + static_cast<std::ptrdiff_t>(end));

@@ -23,6 +23,7 @@
 #include "diagram/cancellation.h"
 #include "predicates/axis_box.h"
 #include "predicates/centre_expansion.h"
+#include "octree/box_budget.h"
 #include "octree/leaf_decision.h"
 #include "octree/octree_diagram.h"
 #include "octree/quadruple_cache.h"
@@ -40,9 +41,11 @@ template <class Kernel>
 class Box_refinement {
  public:
   // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
-  // `cancellation` is checked every thousand boxes or so (one seed box can take a second).
-  Box_refinement(const std::vector<Site>& sites, const Axis_box& root, const Cancellation* cancellation = nullptr)
-      : sites_(sites), root_(root), cancellation_(cancellation), star_(sites) {}
+  // `cancellation` is checked every thousand boxes or so (one seed box can take a second), and as often
+  // the boxes are spent from `budget` when given (box_budget.h).
+  Box_refinement(const std::vector<Site>& sites, const Axis_box& root, const Cancellation* cancellation = nullptr,
+                 Box_budget* budget = nullptr)
+      : sites_(sites), root_(root), cancellation_(cancellation), budget_(budget), star_(sites) {}
 
   // Appends every vertex located in the box (half-open, closed on the root's upper faces), with its tie set.
   // Precondition: `candidates` contains every site that owns a point of the closed box.
@@ -86,6 +89,7 @@ class Box_refinement {
   const std::vector<Site>& sites_;
   Axis_box root_;
   const Cancellation* cancellation_;
+  Box_budget* budget_;
   std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
   std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
   std::vector<Site_index> tie_;

@@ -16,6 +16,7 @@
 #include "octree/leaf_decision.h"
 #include "octree/lift_span.h"
 #include "octree/lifted_triangulation.h"
+#include "octree/lifted_vertices.h"
 
 namespace apollonius {
 namespace {
@@ -45,8 +46,6 @@ struct Patch {
   int depth;
   int stagnant;  // levels since the kept sites last changed
 };
-
-using Quadruple_key = std::array<Site_index, 4>;
 
 // The certified far field rounds its intervals outwards; the floating path (kernels.h) evaluates the same
 // formulas in round-to-nearest, as plain doubles would. Either way the caller's mode comes back.
@@ -226,60 +225,6 @@ class Far_field {
   std::vector<std::vector<Site_index>> patch_sites_;
 };
 
-// Sites tested for one vertex, by position in the lifted triangulation's sites; cleared in O(tested).
-class Tested_sites {
- public:
-  explicit Tested_sites(std::size_t sites) : tested_(sites, false) {}
-  bool first_test(std::size_t position) {
-    if (tested_[position]) return false;
-    tested_[position] = true;
-    touched_.push_back(position);
-    return true;
-  }
-  void clear() {
-    for (std::size_t p : touched_) tested_[p] = false;
-    touched_.clear();
-  }
-
- private:
-  std::vector<bool> tested_;
-  std::vector<std::size_t> touched_;
-};
-
-// The tie set of a vertex v of a lifted 3-face outside R among the escaping sites, or false if one of
-// them is strictly closer, through the triangulation's edges (lifted_triangulation.h): its lift lies in the
-// power cell of v's first site iff no neighbour of that site and no unplaced site beats it, and then the
-// ties are the unplaced ones that tie plus those reached from v's sites over edges between tied sites.
-// Cost: O((|tie set| + 1) * degree + unplaced) conflict tests, against O(escaping) for each vertex before.
-template <class Kernel>
-bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, const Lifted_triangulation& lifts,
-                           Tested_sites& tested, std::vector<Site_index>& tie) {
-  const auto& own = v.sites();
-  tie.assign(own.begin(), own.end());
-  tested.clear();
-  for (Site_index s : own) tested.first_test(lifts.position_of(s));
-  const auto beats = [&](Site_index s) {
-    if (!tested.first_test(lifts.position_of(s))) return false;
-    const Sign sign = Kernel::conflict(v, sites[s]);
-    if (sign == Sign::ZERO) tie.push_back(s);
-    return sign == Sign::NEGATIVE;
-  };
-  for (Site_index s : lifts.unplaced)
-    if (beats(s)) return false;
-  // tie[0] is v's first site, so its neighbours decide whether v is a vertex; the later passes find ties
-  // only (an unplaced site has no neighbours). A site beating v there contradicts the first pass, which the
-  // exact predicates cannot; the floating path's rounding can, and rejects v.
-  for (std::size_t k = 0; k < tie.size(); ++k)
-    for (Site_index s : lifts.neighbours_of(tie[k]))
-      if (beats(s)) {
-        if (k != 0 && std::is_same_v<Kernel, Certified_kernel>)
-          throw std::logic_error("far field: a site beats a vertex that its first site's neighbours accept");
-        return false;
-      }
-  std::sort(tie.begin(), tie.end());
-  return true;
-}
-
 }  // namespace
 
 template <class Kernel>
@@ -294,7 +239,6 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
   // Candidate quadruples: the 3-faces of the escaping sites' lifted triangulation, which cover every vertex
   // (lifted_triangulation.h): O(E log E) for E escaping sites, whatever their ties at infinity.
   const Lifted_triangulation lifts = lifted_triangulation(sites, escaping, cancellation);
-  const std::vector<Quadruple_key>& quadruples = lifts.quadruples;
   std::vector<std::vector<Site_index>> patch_sites;
   if (with_patch_sites) {
     std::vector<std::vector<std::vector<Site_index>>> sites_by_face(6);
@@ -311,31 +255,10 @@ Far_field_vertices far_vertices(const std::vector<Site>& sites, const std::vecto
 
   // Each vertex outside the closed root box, decided exactly against the escaping sites (which own every
   // point there), with its tie set among them through the lifts' edges.
-  const auto outside_root = [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); };
-  std::vector<std::vector<Found_vertex>> found(quadruples.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size()), [&](const tbb::blocked_range<std::size_t>& range) {
-    Tested_sites tested(lifts.sites.size());
-    std::vector<Site_index> tie;
-    for (std::size_t q = range.begin(); q != range.end(); ++q) {
-      throw_if_cancelled(cancellation);
-      for (const Vertex& v : Kernel::vertices_of_quadruple(make_quadruple(quadruples[q], sites)).vertices)
-        if (outside_root(v) && tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie))
-          append_unique<Kernel>(found[q], 0, {tie, v});
-    }
-  });
-  // A vertex with five or more tied sites is found from several of their quadruples: kept once.
-  std::vector<Found_vertex> vertices;
-  move_concatenated(found, vertices, cancellation);
-  cancellable_stable_sort(vertices.begin(), vertices.end(), cancellation, [](const Found_vertex& x, const Found_vertex& y) { return x.tie_set < y.tie_set; });
-  std::vector<Found_vertex> unique;
-  for (std::size_t i = 0; i < vertices.size();) {
-    std::size_t end = i;
-    while (end < vertices.size() && vertices[end].tie_set == vertices[i].tie_set) ++end;
-    const std::size_t group = unique.size();
-    for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
-    i = end;
-  }
-  return {std::move(unique), quadruples.size(), std::move(patch_sites)};
+  std::vector<Found_vertex> vertices = lifted_vertices<Kernel>(
+      sites, lifts, [&](const Vertex& v) { return !Kernel::in_box(v, root, std::array<bool, 3>{true, true, true}); },
+      cancellation);
+  return {std::move(vertices), lifts.quadruples.size(), std::move(patch_sites)};
 }
 
 template Far_field_vertices far_vertices<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,

@@ -51,6 +51,26 @@ void decide_quadruples(const std::vector<Site>& sites, const std::vector<Site_in
         }
 }
 
+namespace {
+
+// Whether two vertices certainly differ: their interval enclosures are disjoint.
+bool certainly_apart(const Vertex& u, const Vertex& v) {
+  const std::array<Interval, 4> a = u.point_interval(), b = v.point_interval();
+  for (int j = 0; j < 4; ++j)
+    if (a[j].sup() < b[j].inf() || b[j].sup() < a[j].inf()) return true;
+  return false;
+}
+
+}  // namespace
+
+template <class Kernel>
+std::size_t root_equal_to(const Vertex& u, const Quadruple_vertices& roots) {
+  if (roots.vertices.size() <= 1) return 0;
+  if (certainly_apart(roots.vertices[0], u)) return 1;
+  if (certainly_apart(roots.vertices[1], u)) return 0;
+  return Kernel::compare(roots.vertices[0], u) == Sign::ZERO ? 0 : 1;
+}
+
 template void decide_quadruples<Certified_kernel>(const std::vector<Site>&, const std::vector<Site_index>&,
                                                   const std::vector<Site_index>&, const std::function<bool(const Vertex&)>&,
                                                   std::vector<Found_vertex>&, std::size_t);
@@ -59,5 +79,8 @@ template void decide_quadruples<Floating_kernel>(const std::vector<Site>&, const
                                                  std::vector<Found_vertex>&, std::size_t);
 template void append_unique<Certified_kernel>(std::vector<Found_vertex>&, std::size_t, Found_vertex);
 template void append_unique<Floating_kernel>(std::vector<Found_vertex>&, std::size_t, Found_vertex);
+
+template std::size_t root_equal_to<Certified_kernel>(const Vertex&, const Quadruple_vertices&);
+template std::size_t root_equal_to<Floating_kernel>(const Vertex&, const Quadruple_vertices&);
 
 }  // namespace apollonius

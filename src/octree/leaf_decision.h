@@ -9,6 +9,7 @@
 
 #include "diagram/diagram.h"
 #include "predicates/vertex.h"
+#include "predicates/vertices_of.h"
 
 namespace apollonius {
 
@@ -28,5 +29,10 @@ void decide_quadruples(const std::vector<Site>& sites, const std::vector<Site_in
 // the list holds each vertex until the assembly, so it is rounded here, in parallel, and its exact values go.
 template <class Kernel>
 void append_unique(std::vector<Found_vertex>& out, std::size_t first, Found_vertex found);
+
+// The index among `roots` of the root equal to u, given that u is a root whenever the roots are discrete
+// (none when they are not); the intervals tell most apart, compare the rest. Kernel: kernels.h.
+template <class Kernel>
+std::size_t root_equal_to(const Vertex& u, const Quadruple_vertices& roots);
 
 }  // namespace apollonius

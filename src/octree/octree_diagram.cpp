@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <stdexcept>
 
@@ -16,6 +17,8 @@
 #include "octree/box_refinement.h"
 #include "octree/candidate_propagation.h"
 #include "octree/far_field.h"
+#include "octree/lifted_triangulation.h"
+#include "octree/lifted_vertices.h"
 #include "predicates/kernels.h"
 #include "predicates/rounding_guard.h"
 #include "predicates/trisector_rows.h"
@@ -37,6 +40,10 @@ constexpr double kFarFieldScale = 2;
 // tetrahedra per point of a uniform random set in space (6.77). Room that is never filled is address
 // space, not memory: its pages are never touched.
 constexpr std::size_t kReservedVerticesPerSite = 8;
+
+// The refinement's budget when only the vertices are asked for (octree_diagram.h, step 5).
+constexpr std::size_t kBoxesPerSiteBeforeLifted = 512;
+constexpr std::size_t kBoxesBeforeLifted = 16384;
 
 // Seconds since the last call (or construction).
 class Lap_timer {
@@ -104,9 +111,6 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const std::vector<Site> normalized = exponent == 0 ? std::vector<Site>{} : scaled_sites(input_sites, exponent);
   const std::vector<Site>& sites = exponent == 0 ? input_sites : normalized;
 
-  const Seed_partition partition(sites, active, kFarFieldScale);
-  statistics.partition_seconds = timer.lap();
-
   // Each thread's vertices, in no particular order (assemble_diagram sorts them): one list per seed would
   // take one more copy of them all to gather.
   const int threads = usable_threads(options.threads);
@@ -120,100 +124,123 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     return list;
   });
   std::vector<std::vector<Found_vertex>> lists;
+  const std::size_t box_limit = options.regions != nullptr ? std::numeric_limits<std::size_t>::max()
+                                : options.box_budget.value_or(kBoxesPerSiteBeforeLifted * active.size() + kBoxesBeforeLifted);
+  Box_budget budget(box_limit);
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
   tbb::task_arena arena(threads);
-  arena.execute([&] {
-    const std::vector<std::vector<Site_index>> candidates =
-        propagate_candidates(sites, active, partition, Kernel::filter_slack, options.cancellation);
-    statistics.propagation_seconds = timer.lap();
+  try {
+    if (box_limit == 0) throw Box_budget_exceeded();
+    arena.execute([&] {
+      const Seed_partition partition(sites, active, kFarFieldScale);
+      statistics.partition_seconds = timer.lap();
+      const std::vector<std::vector<Site_index>> candidates =
+          propagate_candidates(sites, active, partition, Kernel::filter_slack, options.cancellation);
+      statistics.propagation_seconds = timer.lap();
 
-    // The sites owning a point outside R own a point of its boundary, so they are candidates of the boxes
-    // on it; far_field.h decides the vertices beyond R among them.
-    std::vector<Site_index> escaping;
-    std::vector<std::size_t> seeds;
-    for (std::size_t id = 0; id < partition.id_count(); ++id) {
-      if (candidates[id].size() >= 4) seeds.push_back(id);
-      statistics.seed_candidates += candidates[id].size();
-      if (partition.touches_root_boundary(id))
-        escaping.insert(escaping.end(), candidates[id].begin(), candidates[id].end());
-    }
-    std::sort(escaping.begin(), escaping.end());
-    escaping.erase(std::unique(escaping.begin(), escaping.end()), escaping.end());
-    statistics.seed_boxes = seeds.size();
-    statistics.escaping_sites = escaping.size();
-
-    tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation);
-    std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
-    if (options.regions != nullptr) {
-      for (Site_index s : escaping) escapes[s] = true;
-      Octree_regions& r = *options.regions;
-      r = {};
-      r.has_octree = true;
-      r.root = partition.root_box();
+      // The sites owning a point outside R own a point of its boundary, so they are candidates of the boxes
+      // on it; far_field.h decides the vertices beyond R among them.
+      std::vector<Site_index> escaping;
+      std::vector<std::size_t> seeds;
       for (std::size_t id = 0; id < partition.id_count(); ++id) {
-        if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
-        const std::vector<Site_index>& c = candidates[id];
-        if (partition.is_box(id) && c.size() >= 2 && c.size() < 4 &&
-            region_box_needed(sites, c.data(), c.data() + c.size(), escapes))
-          r.boxes.push_back({partition.box(id), Octree_regions::Sites(c.begin(), c.end())});
+        if (candidates[id].size() >= 4) seeds.push_back(id);
+        statistics.seed_candidates += candidates[id].size();
+        if (partition.touches_root_boundary(id))
+          escaping.insert(escaping.end(), candidates[id].begin(), candidates[id].end());
       }
-    }
-    // The regions follow the partition's boxes in the order of the seeds, each refined depth first: the
-    // same for every thread count, with no sort. One thread refines the seeds in order, straight into
-    // the regions; more keep a list per seed (one list per thread would grow to millions of boxes, and each
-    // reallocation would move them all at once), concatenated in order.
-    const auto refine_seed = [&](std::size_t k, std::vector<Octree_regions::Box>* regions) {
-      throw_if_cancelled(options.cancellation);
-      Box_refinement<Kernel>& local = refinement.local();
-      if (regions != nullptr) local.record_regions(regions, &escapes);
-      local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found.local());
-    };
-    // The far field needs only the escaping sites: it runs beside the refinement (a task that the one thread
-    // of --threads 1 runs at the wait).
-    Far_field_vertices far;
-    tbb::task_group far_task;
-    far_task.run([&] {
-      Lap_timer far_timer;
-      far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box(),
-                                 options.regions != nullptr, options.cancellation);
-      statistics.far_field_seconds = far_timer.lap();
+      std::sort(escaping.begin(), escaping.end());
+      escaping.erase(std::unique(escaping.begin(), escaping.end()), escaping.end());
+      statistics.seed_boxes = seeds.size();
+      statistics.escaping_sites = escaping.size();
+
+      tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation,
+                                                                         &budget);
+      std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
+      if (options.regions != nullptr) {
+        for (Site_index s : escaping) escapes[s] = true;
+        Octree_regions& r = *options.regions;
+        r = {};
+        r.has_octree = true;
+        r.root = partition.root_box();
+        for (std::size_t id = 0; id < partition.id_count(); ++id) {
+          if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
+          const std::vector<Site_index>& c = candidates[id];
+          if (partition.is_box(id) && c.size() >= 2 && c.size() < 4 &&
+              region_box_needed(sites, c.data(), c.data() + c.size(), escapes))
+            r.boxes.push_back({partition.box(id), Octree_regions::Sites(c.begin(), c.end())});
+        }
+      }
+      // The regions follow the partition's boxes in the order of the seeds, each refined depth first: the
+      // same for every thread count, with no sort. One thread refines the seeds in order, straight into
+      // the regions; more keep a list per seed (one list per thread would grow to millions of boxes, and each
+      // reallocation would move them all at once), concatenated in order.
+      const auto refine_seed = [&](std::size_t k, std::vector<Octree_regions::Box>* regions) {
+        throw_if_cancelled(options.cancellation);
+        Box_refinement<Kernel>& local = refinement.local();
+        if (regions != nullptr) local.record_regions(regions, &escapes);
+        local.find_vertices(partition.box(seeds[k]), candidates[seeds[k]], found.local());
+      };
+      // The far field needs only the escaping sites: it runs beside the refinement (a task that the one thread
+      // of --threads 1 runs at the wait).
+      Far_field_vertices far;
+      tbb::task_group far_task;
+      far_task.run([&] {
+        Lap_timer far_timer;
+        far = far_vertices<Kernel>(sites, escaping, partition.origin(), partition.root_radius(), partition.root_box(),
+                                   options.regions != nullptr, options.cancellation);
+        statistics.far_field_seconds = far_timer.lap();
+      });
+      try {
+        if (options.threads <= 1) {
+          for (std::size_t k = 0; k < seeds.size(); ++k)
+            refine_seed(k, options.regions != nullptr ? &options.regions->boxes : nullptr);
+        } else {
+          std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
+          tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
+            refine_seed(k, options.regions != nullptr ? &seed_regions[k] : nullptr);
+          });
+          if (options.regions != nullptr) move_concatenated(seed_regions, options.regions->boxes, options.cancellation);
+        }
+      } catch (...) {
+        far_task.cancel();
+        far_task.wait();  // a task_group must not be destroyed with a task running
+        throw;
+      }
+      statistics.refinement_seconds = timer.lap();
+      far_task.wait();
+      timer.lap();  // the wait is the far field's, which it timed itself
+      for (const Box_refinement<Kernel>& r : refinement) {
+        const Refinement_counts counts = r.counts();
+        statistics.boxes += counts.boxes;
+        statistics.leaves += counts.leaves;
+        statistics.leaf_candidates += counts.leaf_candidates;
+        statistics.quadruples += counts.quadruples;
+        statistics.distinct_quadruples += counts.distinct_quadruples;
+      }
+      for (std::vector<Found_vertex>& list : found) lists.push_back(std::move(list));
+      lists.push_back(std::move(far.vertices));
+      if (options.regions != nullptr) {
+        options.regions->escaping = escaping;
+        options.regions->far_sets = std::move(far.patch_sites);
+      }
+      statistics.far_field_quadruples = far.quadruples;
     });
-    try {
-      if (options.threads <= 1) {
-        for (std::size_t k = 0; k < seeds.size(); ++k)
-          refine_seed(k, options.regions != nullptr ? &options.regions->boxes : nullptr);
-      } else {
-        std::vector<std::vector<Octree_regions::Box>> seed_regions(options.regions != nullptr ? seeds.size() : 0);
-        tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t k) {
-          refine_seed(k, options.regions != nullptr ? &seed_regions[k] : nullptr);
-        });
-        if (options.regions != nullptr) move_concatenated(seed_regions, options.regions->boxes, options.cancellation);
-      }
-    } catch (...) {
-      far_task.cancel();
-      far_task.wait();  // a task_group must not be destroyed with a task running
-      throw;
-    }
-    statistics.refinement_seconds = timer.lap();
-    far_task.wait();
-    timer.lap();  // the wait is the far field's, which it timed itself
-    for (const Box_refinement<Kernel>& r : refinement) {
-      const Refinement_counts counts = r.counts();
-      statistics.boxes += counts.boxes;
-      statistics.leaves += counts.leaves;
-      statistics.leaf_candidates += counts.leaf_candidates;
-      statistics.quadruples += counts.quadruples;
-      statistics.distinct_quadruples += counts.distinct_quadruples;
-    }
-    for (std::vector<Found_vertex>& list : found) lists.push_back(std::move(list));
-    lists.push_back(std::move(far.vertices));
-    if (options.regions != nullptr) {
-      options.regions->escaping = escaping;
-      options.regions->far_sets = std::move(far.patch_sites);
-    }
-    statistics.far_field_quadruples = far.quadruples;
-  });
+  } catch (const Box_budget_exceeded&) {
+    // Step 5: what the refinement found goes, and the vertices come from the lifted triangulation.
+    lists.clear();
+    statistics = Octree_statistics{};
+    statistics.boxes = budget.spent();
+    statistics.lifted_fallback = true;
+    Lap_timer lifted_timer;
+    arena.execute([&] {
+      const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);
+      statistics.lifted_quadruples = lifts.quadruples.size();
+      lists.push_back(lifted_vertices<Kernel>(sites, lifts, [](const Vertex&) { return true; }, options.cancellation));
+    });
+    statistics.lifted_seconds = lifted_timer.lap();
+    timer.lap();
+  }
   if (exponent != 0) {
     for (std::vector<Found_vertex>& list : lists)
       for (Found_vertex& f : list) {  // rounded again on the input sites: the scaled rounding need not scale

@@ -10,6 +10,16 @@
 //     candidates remain (or refining stops helping, on degenerate input); each leaf decides the
 //     quadruples of its candidates exactly, keeping the vertices that lie in it (half-open).
 //  4. Far field (far_field.h): the vertices beyond R, by directions.
+//  5. The lifted fallback: when only the vertices are asked for (no regions) and the refinement passes a
+//     budget of boxes (512 per active site, plus 16,384), it stops and every vertex is taken from the
+//     3-faces of the active sites' lifted triangulation (lifted_vertices.h). Some degenerate inputs make
+//     the octree's box count grow far faster than the sites while the triangulation stays small: 1,000
+//     balls tangent to one circle, all tied at its centre, took over 120 s and 8 million boxes beside the
+//     circle; the triangulation of their lifts has 9,583 3-faces. On the benchmark inputs the octree uses
+//     8 to 60 boxes per site and never reaches the budget; there it is twice as fast as the triangulation
+//     (whose weights 2 w^2 are seldom doubles, so CGAL's lazy exact kernel decides). Cost: at most the
+//     budget's boxes plus the triangulation, O(n log n) expected for n lifts in general position. Both
+//     decide every vertex exactly, so the output is the same whichever ran, for every thread count.
 //
 // Completeness. Removing a candidate is certified (centre_expansion.h): the site is strictly farther than
 // another at every point of the box. So every box's candidates include every site that owns a point of
@@ -19,6 +29,7 @@
 // candidates of the boxes on R's boundary, which include every site owning a point outside R.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <boost/container/small_vector.hpp>
@@ -36,6 +47,11 @@ struct Octree_statistics {
          assembly_seconds = 0;
   std::size_t seed_boxes = 0, seed_candidates = 0, escaping_sites = 0, boxes = 0, leaves = 0, leaf_candidates = 0,
               quadruples = 0, distinct_quadruples = 0, far_field_quadruples = 0;
+  // The lifted fallback (step 5): its time and its 3-faces. The counts above then stay 0, but boxes: those
+  // the refinement had reported to the budget when it stopped.
+  bool lifted_fallback = false;
+  double lifted_seconds = 0;
+  std::size_t lifted_quadruples = 0;
 };
 
 // Certified: every decision exact (the default). Floating: the same algorithm in plain doubles, no filter
@@ -80,6 +96,9 @@ struct Octree_options {
   // fraction of a second (cancellation.h says where it checks) and returns nothing. The output of a
   // computation that is not cancelled is the same as without it.
   const Cancellation* cancellation = nullptr;
+  // The boxes the refinement may spend before step 5 takes over; automatic (512 per active site, plus
+  // 16,384) when not given, and 0 goes to step 5 at once. Ignored (never spent) when regions are asked for.
+  std::optional<std::size_t> box_budget{};
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

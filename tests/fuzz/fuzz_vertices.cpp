@@ -1,7 +1,7 @@
 // libFuzzer target: a small site set decoded from the bytes, its diagram computed by the certified octree
-// (octree_diagram) and by the brute-force reference (brute_force_diagram). They must agree exactly: the
-// same tie sets with the same correctly rounded coordinates, the same hidden sites, the same sites
-// without a vertex. A disagreement prints both and traps.
+// (octree_diagram), by its lifted fallback alone, and by the brute-force reference (brute_force_diagram).
+// They must agree exactly: the same tie sets with the same correctly rounded coordinates, the same hidden
+// sites, the same sites without a vertex. A disagreement prints both and traps.
 //
 // Exceptions. Neither algorithm may throw on a finite input, with one exception, accepted here as a
 // documented limitation and not as an answer: octree_diagram refuses with std::overflow_error ("the far
@@ -19,6 +19,7 @@
 #include <iostream>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "fuzz/fuzz_sites.h"
@@ -64,13 +65,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (centres_reach_double_range_limit(sites)) return 0;
     throw;
   }
-  if (!same_diagram(octree, reference)) {
-    std::cerr << "octree and brute force disagree on these sites:\n";
+  // The octree's lifted fallback (octree_diagram.h, step 5) on every input, not only past its budget.
+  apollonius::Octree_options lifted_only;
+  lifted_only.box_budget = 0;
+  const Diagram lifted = apollonius::octree_diagram(sites, lifted_only);
+  for (const auto& [name, computed] : {std::pair<const char*, const Diagram*>{"octree", &octree}, {"lifted", &lifted}}) {
+    if (same_diagram(*computed, reference)) continue;
+    std::cerr << name << " and brute force disagree on these sites:\n";
     apollonius::write_sites_text(std::cerr, sites, "fuzz_vertices input");
     std::cerr << "brute force:\n";
     apollonius::write_vertices_text(std::cerr, reference);
-    std::cerr << "octree:\n";
-    apollonius::write_vertices_text(std::cerr, octree);
+    std::cerr << name << ":\n";
+    apollonius::write_vertices_text(std::cerr, *computed);
     __builtin_trap();
   }
   return 0;

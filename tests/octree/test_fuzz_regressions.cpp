@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "reference/brute_force_diagram.h"
@@ -17,16 +18,7 @@ using namespace apollonius::testing;
 
 namespace {
 
-// Returns the octree's statistics, for the regressions that were about its amount of work.
-Octree_statistics check_octree_equals_brute_force(const std::string& name, const std::string& folder = "regression") {
-  CAPTURE(name);
-  const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/" + folder + "/" + name, {}).sites;
-  const Diagram reference = brute_force_diagram(sites);
-  validate_diagram(reference, sites);
-  Octree_statistics statistics;
-  Octree_options options;
-  options.statistics = &statistics;
-  const Diagram octree = octree_diagram(sites, options);
+void check_same(const Diagram& octree, const Diagram& reference) {
   REQUIRE(octree.vertices.size() == reference.vertices.size());
   for (std::size_t i = 0; i < octree.vertices.size(); ++i) {
     CAPTURE(i);
@@ -34,6 +26,23 @@ Octree_statistics check_octree_equals_brute_force(const std::string& name, const
     CHECK(octree.vertices[i].rounded == reference.vertices[i].rounded);
   }
   CHECK(octree.sites_without_vertex == reference.sites_without_vertex);
+}
+
+// The octree with no box budget (so that its own rules are what the regression tests) and with the
+// automatic one (octree_diagram.h, step 5), both against the brute force. Returns the statistics of the
+// first, for the regressions that were about the octree's amount of work.
+Octree_statistics check_octree_equals_brute_force(const std::string& name, const std::string& folder = "regression") {
+  CAPTURE(name);
+  const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/" + folder + "/" + name, {}).sites;
+  const Diagram reference = brute_force_diagram(sites);
+  validate_diagram(reference, sites);
+  Octree_statistics statistics;
+  Octree_options unlimited;
+  unlimited.statistics = &statistics;
+  unlimited.box_budget = std::numeric_limits<std::size_t>::max();
+  check_same(octree_diagram(sites, unlimited), reference);
+  CHECK_FALSE(statistics.lifted_fallback);
+  check_same(octree_diagram(sites), reference);
   return statistics;
 }
 
@@ -292,4 +301,30 @@ TEST_CASE("regression: octree boxes about a cluster of more than 12 candidates f
   for (const char* name : {"octree_244k_boxes_for_cluster_of_19_and_balls_to_1e267.balls",
                            "octree_440k_boxes_about_cluster_of_37_to_3e266.balls"})
     check_octree_boxes_below(name, 20000, 60);
+}
+
+// bench/scaling.sh's tangent families at 1,000 sites (2026-11-30, twelfth stop): balls tangent to one
+// circle, all tied at its centre, made the octree's boxes grow far faster than the sites (beside the
+// circle): 533,580 boxes for 100 balls, 1.4 million for 200, 11.3 million for these 400 (16.8 s), past
+// 120 s for 1,000. Too large for the brute force; the answer is known by construction: the one vertex,
+// the circle's centre (3, -2, 3) at distance 1, with all 400 tied. The octree now stops at its budget
+// (512 boxes per site) and takes the vertices from the lifted triangulation's 3-faces (octree_diagram.h,
+// step 5): 2,968 of them.
+TEST_CASE("regression: octree_11m_boxes_for_400_balls_tangent_to_one_circle") {
+  const char* name = "octree_11m_boxes_for_400_balls_tangent_to_one_circle.balls";
+  Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 60), name);
+  const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name, {}).sites;
+  REQUIRE(sites.size() == 400);
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    Octree_statistics statistics;
+    const Diagram diagram = octree_diagram(sites, Octree_options{threads, &statistics});
+    validate_diagram(diagram, sites);
+    CHECK(statistics.lifted_fallback);
+    CHECK(statistics.boxes <= 512 * 400 + 16384 + 2 * 1024);
+    REQUIRE(diagram.vertices.size() == 1);
+    CHECK(diagram.vertices[0].tie_set.size() == 400);
+    CHECK(diagram.vertices[0].rounded == std::array<double, 4>{3, -2, 3, 1});
+  }
+  MESSAGE(std::string(name) << ": " << limit.stop() << " s");
 }

@@ -1,10 +1,12 @@
-// The octree algorithm against the brute-force reference: identical tie sets and printed coordinates on
-// thousands of random and degenerate inputs, on the small vdrc sets, and for every thread count.
+// The octree algorithm, and its lifted fallback, against the brute-force reference: identical tie sets and
+// printed coordinates on thousands of random and degenerate inputs, on the small vdrc sets, and for every
+// thread count.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -89,7 +91,7 @@ Diagram reference_diagram(Site_family family, std::size_t n, std::uint64_t seed)
 TEST_CASE("octree equals brute force on every generator family") {
   const std::uint64_t max_sites = std::max<std::uint64_t>(5, from_environment("APOLLONIUS_DIFFERENTIAL_MAX_SITES", 40));
   std::size_t inputs = 0, vertices = 0, expected_inputs = 0;
-  std::pair<double, std::string> slowest;  // the octree's longest time, and its input
+  std::pair<double, std::string> slowest, slowest_lifted;  // the octree's and the lifted's longest time, and its input
   for (const std::string& name : site_family_names()) {
     if (!family_selected(name)) continue;
     const Site_family family = site_family_from_name(name);
@@ -111,12 +113,25 @@ TEST_CASE("octree equals brute force on every generator family") {
       if (seconds > report_over()) MESSAGE("octree " << seconds << " s: " << input);
       slowest = std::max(slowest, std::make_pair(seconds, input));
       check_same(octree, reference);
+      // The lifted fallback (octree_diagram.h, step 5) on every input, not only where the octree gives up.
+      Octree_options lifted_only;
+      lifted_only.box_budget = 0;
+      Octree_statistics lifted_statistics;
+      lifted_only.statistics = &lifted_statistics;
+      Input_time_limit lifted_limit(time_limit(), input + " (lifted)");
+      const Diagram lifted = octree_diagram(sites, lifted_only);
+      const double lifted_seconds = lifted_limit.stop();
+      if (lifted_seconds > report_over()) MESSAGE("lifted " << lifted_seconds << " s: " << input);
+      slowest_lifted = std::max(slowest_lifted, std::make_pair(lifted_seconds, input));
+      if (sites.size() - lifted.hidden.size() >= 4) CHECK(lifted_statistics.lifted_fallback);  // else no step runs
+      check_same(lifted, reference);
       ++inputs;
       vertices += reference.vertices.size();
     }
   }
   MESSAGE(inputs << " inputs of 5 to " << max_sites << " sites, " << vertices << " vertices, all equal; slowest octree "
-                 << slowest.first << " s: " << slowest.second);
+                 << slowest.first << " s: " << slowest.second << "; slowest lifted " << slowest_lifted.first
+                 << " s: " << slowest_lifted.second);
   CHECK(inputs == expected_inputs);
   CHECK(inputs >= std::min<std::uint64_t>(5000, expected_inputs));
 }
@@ -127,7 +142,11 @@ TEST_CASE("octree equals brute force on the small vdrc sets") {
     const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", {}).sites;
     const Diagram octree = octree_diagram(sites);
     validate_diagram(octree, sites);
-    check_same(octree, brute_force_diagram(sites));
+    const Diagram reference = brute_force_diagram(sites);
+    check_same(octree, reference);
+    Octree_options lifted_only;
+    lifted_only.box_budget = 0;
+    check_same(octree_diagram(sites, lifted_only), reference);
   }
 }
 
@@ -138,5 +157,39 @@ TEST_CASE("the output does not depend on the number of threads") {
   for (int threads : {2, 3, 8}) {
     CAPTURE(threads);
     check_same(octree_diagram(sites, Octree_options{threads}), one);
+    Octree_options lifted_only{threads};
+    lifted_only.box_budget = 0;
+    check_same(octree_diagram(sites, lifted_only), one);
+  }
+}
+
+// The octree's budget (octree_diagram.h, step 5): spent, the vertices come from the lifted triangulation,
+// the same as the octree's own; never spent when the whole diagram's regions are asked for.
+TEST_CASE("the octree turns to the lifted triangulation once its box budget is spent") {
+  const std::vector<Site> sites = generate_sites(Site_family::circle_tangent, 60, 3);
+  Octree_statistics unlimited_statistics;
+  Octree_options unlimited{1, &unlimited_statistics};
+  unlimited.box_budget = std::numeric_limits<std::size_t>::max();
+  const Diagram octree = octree_diagram(sites, unlimited);
+  CHECK_FALSE(unlimited_statistics.lifted_fallback);
+  REQUIRE(unlimited_statistics.boxes > 4096);
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    Octree_statistics statistics;
+    Octree_options budgeted{threads, &statistics};
+    budgeted.box_budget = 2048;
+    check_same(octree_diagram(sites, budgeted), octree);
+    CHECK(statistics.lifted_fallback);
+    CHECK(statistics.boxes >= 2048);
+    CHECK(statistics.lifted_quadruples > 0);
+
+    Octree_statistics with_regions_statistics;
+    Octree_regions regions;
+    Octree_options with_regions{threads, &with_regions_statistics};
+    with_regions.box_budget = 2048;
+    with_regions.regions = &regions;
+    check_same(octree_diagram(sites, with_regions), octree);
+    CHECK_FALSE(with_regions_statistics.lifted_fallback);
+    CHECK(with_regions_statistics.boxes == unlimited_statistics.boxes);
   }
 }
