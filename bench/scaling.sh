@@ -6,6 +6,7 @@
 # 10,000 sites most of its balls lie inside others (hidden), while every lattice ball has a cell.
 # Usage: bench/scaling.sh [BINARY (default build/apollonius3d)] [SIZES (default "1000 4000 10000")]
 #        [FAMILIES (default "lattice lattice-noise far-vertices sphere-tangent two-spheres circle-tangent circle")] [TIMEOUT s (default 120)]
+# A family with no vertex at all (circle-mixed, whose balls all tie along one axis) shows 0 in the last column.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 binary=${1:-build/apollonius3d} sizes=${2:-1000 4000 10000}
@@ -34,7 +35,7 @@ for n in $sizes; do
     else
       printf "| %s | %d | %d | %s | %s | %.2f | %.2f | %.2f |\n" "$family" "$n" "$visible" "$seconds" "$memory" \
         "$(echo "$seconds / $base_seconds" | bc -l)" "$(echo "$memory / $base_memory" | bc -l)" \
-        "$(echo "($seconds / $visible) / ($base_seconds / $base_visible)" | bc -l)"
+        "$(if [ "$visible" -gt 0 ]; then echo "($seconds / $visible) / ($base_seconds / $base_visible)" | bc -l; else echo 0; fi)"
     fi
   done
 done

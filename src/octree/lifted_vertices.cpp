@@ -87,8 +87,9 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
       unsigned skipped = 0;
       if (const auto at = degenerate_at.find(quadruple[0]); at != degenerate_at.end())
         for (std::size_t d : at->second) {
-          const std::vector<Site_index>& tied = degenerate[d].tie_set;
-          if (std::includes(tied.begin(), tied.end(), quadruple.begin(), quadruple.end()))
+          const std::vector<Site_index>& tied = degenerate[d].tie_set;  // O(log t): t reaches every site
+          if (std::all_of(quadruple.begin(), quadruple.end(),
+                          [&](Site_index s) { return std::binary_search(tied.begin(), tied.end(), s); }))
             skipped |= 1u << root_equal_to<Kernel>(degenerate[d].vertex, roots);
         }
       for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
