@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <tuple>
 
 #include "diagram/cancellable_steps.h"
 
@@ -91,29 +92,44 @@ Lifted_triangulation triangulation_with(const std::vector<Site>& sites, const st
       std::sort(list.begin(), list.end());
     }
   }
-  std::vector<std::array<Site_index, 4>>& quadruples = result.quadruples;
   if (dimension < 3) return result;
+  // Each 3-face with the apex of the full cell it came from: twice for a facet of two full cells.
+  struct Face {
+    std::array<Site_index, 4> quadruple;
+    Site_index apex;
+    bool operator<(const Face& f) const { return std::tie(quadruple, apex) < std::tie(f.quadruple, f.apex); }
+  };
+  std::vector<Face> faces;
   std::size_t visited = 0;
   for (auto cell = triangulation.full_cells_begin(); cell != triangulation.full_cells_end(); ++cell) {
     if (++visited % 4096 == 0) throw_if_cancelled(cancellation);
     // Dimension 3: the finite cells are the 3-simplices; dimension 4: their facets, finite cells' or not.
     for (int omitted = dimension == 4 ? 0 : 4; omitted <= 4; ++omitted) {
-      std::array<Site_index, 4> quadruple;
+      Face face{{}, Lifted_triangulation::kNoSite};
       int size = 0;
       bool finite = true;
       for (int i = 0; i <= dimension && finite; ++i) {
-        if (i == omitted) continue;
         const auto v = cell->vertex(i);
+        if (i == omitted) {
+          if (!triangulation.is_infinite(v)) face.apex = static_cast<Site_index>(v->data().index);
+          continue;
+        }
         if (triangulation.is_infinite(v)) finite = false;
-        else quadruple[size++] = static_cast<Site_index>(v->data().index);
+        else face.quadruple[size++] = static_cast<Site_index>(v->data().index);
       }
       if (!finite || size != 4) continue;
-      std::sort(quadruple.begin(), quadruple.end());
-      quadruples.push_back(quadruple);
+      std::sort(face.quadruple.begin(), face.quadruple.end());
+      faces.push_back(face);
     }
   }
-  cancellable_sort(quadruples.begin(), quadruples.end(), cancellation);
-  quadruples.erase(std::unique(quadruples.begin(), quadruples.end()), quadruples.end());
+  cancellable_sort(faces.begin(), faces.end(), cancellation);
+  for (std::size_t f = 0; f < faces.size();) {
+    result.quadruples.push_back(faces[f].quadruple);
+    std::array<Site_index, 2> apexes{Lifted_triangulation::kNoSite, Lifted_triangulation::kNoSite};
+    for (int k = 0; f < faces.size() && faces[f].quadruple == result.quadruples.back(); ++f)
+      if (k < 2) apexes[k++] = faces[f].apex;
+    result.apexes.push_back(apexes);
+  }
   return result;
 }
 

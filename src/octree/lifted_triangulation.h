@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "diagram/cancellation.h"
@@ -32,7 +33,12 @@ namespace apollonius {
 // refines, so the edges among them connect them all. Lifts that are no vertex of the triangulation (hidden
 // by the others, or repeating another) can still tie at z: they are listed apart.
 struct Lifted_triangulation {
+  static constexpr Site_index kNoSite = std::numeric_limits<Site_index>::max();
   std::vector<std::array<Site_index, 4>> quadruples;  // ascending, each once, each ascending
+  // apexes[q]: the sites opposite quadruples[q] in the two full cells sharing it, kNoSite for an infinite
+  // cell or where the lifts span only three dimensions (then the 3-faces are the full cells). The power
+  // cells of the quadruple's sites meet along its line of roots between those two cells' power centres.
+  std::vector<std::array<Site_index, 2>> apexes;
   std::vector<Site_index> sites;                      // the subset, ascending
   // neighbours[i]: the sites joined to sites[i] by an edge, ascending; empty for an unplaced site.
   std::vector<std::vector<Site_index>> neighbours;

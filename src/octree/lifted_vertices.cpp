@@ -92,9 +92,16 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
                           [&](Site_index s) { return std::binary_search(tied.begin(), tied.end(), s); }))
             skipped |= 1u << root_equal_to<Kernel>(degenerate[d].vertex, roots);
         }
+      const auto beaten_by_apex = [&](const Vertex& v) {
+        return std::any_of(lifts.apexes[q].begin(), lifts.apexes[q].end(), [&](Site_index a) {
+          return a != Lifted_triangulation::kNoSite && Kernel::conflict(v, sites[a]) == Sign::NEGATIVE;
+        });
+      };
       for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
         const Vertex& v = roots.vertices[r];
-        if (skipped >> r & 1 || !wanted(v) || !tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie)) continue;
+        if (skipped >> r & 1 || !wanted(v) || beaten_by_apex(v) ||
+            !tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie))
+          continue;
         if (tie.size() > 4) {
           for (Site_index s : tie) degenerate_at[s].push_back(degenerate.size());
           degenerate.push_back({tie, v});

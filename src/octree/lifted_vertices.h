@@ -7,8 +7,14 @@
 // sites that tie and those reached over edges between tied sites (the tied lifts span a cell of the
 // regular subdivision, which the triangulation refines: its edges connect them).
 //
+// A root is first tested against the apexes of the 3-face's two full cells: the power cells of its sites
+// meet along its line of roots only between those cells' power centres, so a root outside that edge of
+// the power diagram is beaten by an apex. Only a certified NEGATIVE rejects, so this changes no answer;
+// it rejects with two conflict tests most of the roots that are no vertex, where the neighbours took up
+// to their degree (balls tangent to one sphere: about 140).
+//
 // Cost: the triangulation, O(k log k) expected for k lifts in general position, and for each of its Q
-// 3-faces one vertices_of and O(degree + unplaced) conflict tests per root. A vertex of t > 4 tied sites is
+// 3-faces one vertices_of, two conflict tests per root, and O(degree + unplaced) more per vertex. A vertex of t > 4 tied sites is
 // a root of up to C(t, 4) of the 3-faces; once decided it is remembered, and the later quadruples among its
 // sites only name it (root_equal_to) instead of testing its t * degree sites again: O(Q + t * degree) for
 // t balls tangent to one sphere, where testing every time cost O(Q t degree) (1,000 balls tangent to one

@@ -95,6 +95,14 @@ TEST_CASE("every vertex has a 3-face of the lifted triangulation among its tie s
         }
       CHECK(std::is_sorted(list.begin(), list.end()));
       CHECK(std::adjacent_find(list.begin(), list.end()) == list.end());
+      // Two apexes per 3-face, none of its own sites, distinct unless both are missing.
+      REQUIRE(lifts.apexes.size() == list.size());
+      for (std::size_t q = 0; q < list.size(); ++q) {
+        const auto& [first, second] = lifts.apexes[q];
+        for (Site_index apex : {first, second})
+          CHECK(std::find(list[q].begin(), list[q].end(), apex) == list[q].end());
+        CHECK((first != second || first == Lifted_triangulation::kNoSite));
+      }
       const std::set<Lifted_face> faces(list.begin(), list.end());
       for (const Diagram_vertex& v : diagram.vertices) {
         ++checked;
