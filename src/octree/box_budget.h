@@ -1,5 +1,6 @@
 // The boxes the octree may refine before the vertices are taken from the lifted triangulation instead
-// (octree_diagram.cpp, "the lifted fallback"). Shared by the refining threads.
+// (octree_diagram.h, step 5). Shared by the refining threads. A tie-point leaf that enumerates its
+// quadruples one by one spends one box for each.
 #pragma once
 
 #include <atomic>

@@ -454,7 +454,15 @@ void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::siz
   if (dimension <= 2) return;  // no quadruple of K has a discrete set of roots
   if (Kernel::in_box(tie_point, box, closed_above)) append_unique<Kernel>(out, leaf_start, {std::vector<Site_index>(leaf, leaf + k), tie_point});
 
+  // Each quadruple costs about what a box does, and C(k, 4) of them have no other bound: they are counted
+  // like boxes, for the cancellation and the budget (concentric shells of 2,000 balls: hundreds of tied
+  // sites, minutes in one leaf before the budget saw them).
+  std::size_t decided = 0;
   const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
+    if (++decided % kBoxesPerCancellationCheck == 0) {
+      throw_if_cancelled(cancellation_);
+      if (budget_ != nullptr) budget_->spend(kBoxesPerCancellationCheck);
+    }
     keep_roots_in_box(quadruple, roots, 1u << root_equal_to<Kernel>(tie_point, roots), box, leaf, k, leaf_start, out, false);
   };
   if (dimension == 3) {

@@ -328,3 +328,24 @@ TEST_CASE("regression: octree_11m_boxes_for_400_balls_tangent_to_one_circle") {
   }
   MESSAGE(std::string(name) << ": " << limit.stop() << " s");
 }
+
+// bench/scaling.sh (2026-11-30, twelfth stop): balls on concentric shells, hundreds tied at the common
+// centre. A tie-point leaf whose star gave up enumerated C(k, 4) quadruples of its tied candidates in one
+// box, unseen by the box budget and by the cancellation: past 100 s. Each such quadruple now counts like a
+// box, and the lifted fallback takes over. Too large for the brute force: every vertex is validated
+// exactly against every site, and the same diagram comes from the lifted triangulation alone.
+TEST_CASE("regression: octree_tie_point_leaf_enumerates_quadruples_of_2000_balls_in_concentric_shells") {
+  const char* name = "octree_tie_point_leaf_enumerates_quadruples_of_2000_balls_in_concentric_shells.balls";
+  Input_time_limit limit(seconds_from_environment("APOLLONIUS_REGRESSION_TIME_LIMIT", 120), name);
+  const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name, {}).sites;
+  Octree_statistics statistics;
+  const Diagram diagram = octree_diagram(sites, Octree_options{1, &statistics});
+  validate_diagram(diagram, sites);
+  CHECK(statistics.lifted_fallback);
+  CHECK(statistics.boxes <= 512 * sites.size() + 16384 + 1024);
+  Octree_options lifted_only;
+  lifted_only.box_budget = 0;
+  check_same(octree_diagram(sites, lifted_only), diagram);
+  CHECK(diagram.vertices.size() == 3117);
+  MESSAGE(std::string(name) << ": " << limit.stop() << " s");
+}
