@@ -17,6 +17,10 @@ constexpr int kMaxStarDepth = 16;
 constexpr int kStarStagnation = 2;
 // Past this many patches per candidate the star gives up (exact enumeration is the caller's fallback).
 constexpr std::size_t kPatchesPerCandidate = 256;
+// And past this many recorded quadruples per candidate: a patch at kMaxStarDepth records all C(m, 4) of its
+// m survivors, which for hundreds of sites tied at v (concentric shells of 2,000 balls) held 270 MB, where
+// the caller streams its enumeration.
+constexpr std::size_t kQuadruplesPerCandidate = 256;
 constexpr std::size_t kRecordedSites = 6;
 constexpr std::size_t kWitnesses = 3;
 
@@ -110,10 +114,7 @@ bool Tie_point_star<Kernel>::refine(const Patch& p, const std::vector<std::size_
     }
   }
   if (kept.size() <= 3) return true;
-  if (kept.size() <= kRecordedSites) {
-    record(kept);
-    return true;
-  }
+  if (kept.size() <= kRecordedSites) return record(kept);
   const int stagnant = kept.size() == survivors.size() ? p.stagnant + 1 : 0;
   if (stagnant >= kStarStagnation || p.depth >= kMaxStarDepth) {
     // Every survivor ties at v: spanning a 3-space, all their quadruples with roots share one line through
@@ -128,10 +129,7 @@ bool Tie_point_star<Kernel>::refine(const Patch& p, const std::vector<std::size_
       quadruples_->push_back(basis);
       return true;
     }
-    if (p.depth >= kMaxStarDepth) {
-      record(kept);
-      return true;
-    }
+    if (p.depth >= kMaxStarDepth) return record(kept);
   }
   const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2;
   for (int q = 0; q < 4; ++q) {
@@ -143,15 +141,18 @@ bool Tie_point_star<Kernel>::refine(const Patch& p, const std::vector<std::size_
 }
 
 template <class Kernel>
-void Tie_point_star<Kernel>::record(const std::vector<std::size_t>& survivors) {
+bool Tie_point_star<Kernel>::record(const std::vector<std::size_t>& survivors) {
+  const std::size_t k = survivors.size();
+  const std::size_t count = k < 4 ? 0 : k * (k - 1) / 2 * (k - 2) / 3 * (k - 3) / 4;  // C(k, 4), exact at each step
+  if (quadruples_->size() + count > kQuadruplesPerCandidate * n_.size()) return false;
   std::vector<Site_index> s;
   for (std::size_t c : survivors) s.push_back(candidates_[c]);
   std::sort(s.begin(), s.end());
-  const std::size_t k = s.size();
   for (std::size_t a = 0; a < k; ++a)
     for (std::size_t b = a + 1; b < k; ++b)
       for (std::size_t c = b + 1; c < k; ++c)
         for (std::size_t d = c + 1; d < k; ++d) quadruples_->push_back({s[a], s[b], s[c], s[d]});
+  return true;
 }
 
 template class Tie_point_star<Certified_kernel>;

@@ -17,8 +17,9 @@
 // a double root of each of their quadruples, so they span a 3-space or are separated further down.
 //
 // Every vertex w != v of the box lies in some patch's cone, and its tie set survives there: w is a root of
-// a recorded quadruple. Termination: depth at most kMaxStarDepth; at most kPatchesPerCandidate patches per
-// candidate, past which the star gives up and the caller enumerates every quadruple (also exact).
+// a recorded quadruple. Termination: depth at most kMaxStarDepth; at most kPatchesPerCandidate patches and
+// kQuadruplesPerCandidate recorded quadruples per candidate, past which the star gives up and the caller
+// enumerates every quadruple (also exact, streamed).
 #pragma once
 
 #include <array>
@@ -52,7 +53,7 @@ class Tie_point_star {
     int stagnant;  // levels since a candidate was last removed
   };
   bool refine(const Patch& p, const std::vector<std::size_t>& survivors);
-  void record(const std::vector<std::size_t>& survivors);
+  bool record(const std::vector<std::size_t>& survivors);  // false: too many recorded, give up
 
   const std::vector<Site>& sites_;
   const Site_index* candidates_ = nullptr;
