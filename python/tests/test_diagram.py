@@ -15,8 +15,12 @@ from conftest import (BUNDLED_INPUTS, REPOSITORY, assert_same_doubles, cli_error
 # second). The three other inputs of sites spanning hundreds of binades take 3 to 6 s and are kept. Also
 # left out: nine fuzz inputs of the sixth stop of 2026-11-28 (sites from subnormal to beyond 1e75), whose
 # 'diagram' spends 1 to 9 s each ordering faces on exact numbers of a thousand bits or more (their
-# 'vertices' takes under 0.1 s).
+# 'vertices' takes under 0.1 s). And the 400 balls tangent to one circle and the 2,000 in concentric
+# shells, whose 'vertices' the lifted fallback decides in seconds, while 'diagram', which needs the
+# octree's regions, takes minutes (docs/design.md, "The lifted fallback").
 SLOW = {"1hpv.pdb", "1j3h.pdb", "BALL_SMALL_2000.txt", "BALL_SMALL_5000.txt", "BALL_SMALL_10000.txt",
+        "octree_11m_boxes_for_400_balls_tangent_to_one_circle.balls",
+        "octree_tie_point_leaf_enumerates_quadruples_of_2000_balls_in_concentric_shells.balls",
         "octree_exact_in_box_slow_for_subnormal_sites.balls",
         "far_field_span_recomputed_for_alternating_patches.balls",
         "octree_stagnant_boxes_along_bisector_of_subnormal_cluster_1.balls",
