@@ -41,7 +41,7 @@ py::dict stats_to_python(const Computed& computed) {
                   "seed_candidates"_a = o.seed_candidates, "escaping_sites"_a = o.escaping_sites, "boxes"_a = o.boxes,
                   "leaves"_a = o.leaves, "leaf_candidates"_a = o.leaf_candidates, "quadruples"_a = o.quadruples,
                   "distinct_quadruples"_a = o.distinct_quadruples, "far_field_quadruples"_a = o.far_field_quadruples,
-                  "lifted_fallback"_a = o.lifted_fallback, "lifted_seconds"_a = o.lifted_seconds,
+                  "lifted_fallback"_a = o.lifted_fallback, "lifted_small_input"_a = o.lifted_small_input, "lifted_seconds"_a = o.lifted_seconds,
                   "lifted_quadruples"_a = o.lifted_quadruples);
   return py::dict("predicates"_a = predicates, "octree"_a = octree);
 }

@@ -56,8 +56,10 @@ def test_stats_as_the_command_lines(pept_pdb):
     ran = [p for p in result.stats["predicates"] if p["evaluations"] > 0]
     assert ran == [p for p in cli_vertices_json(pept_pdb, "--stats")["stats"]["predicates"] if p["evaluations"] > 0]
     assert len(ran) >= 3
+    # pept's 107 sites go to the lifted triangulation at once (at most 128 active sites); 1j3h to the octree.
     octree = result.stats["octree"]
-    assert octree["seed_boxes"] > 0 and octree["leaves"] > 0 and octree["refinement_seconds"] >= 0
+    assert octree["lifted_fallback"] and octree["lifted_small_input"] and octree["lifted_quadruples"] > 0
+    assert octree["seed_boxes"] == 0 and octree["boxes"] == 0
     assert apollonius3d.vertices(*apollonius3d.read_sites(pept_pdb)).stats is None
 
 
@@ -179,3 +181,9 @@ def test_fewer_than_four_active_sites(tmp_path):
         assert len(result) == 0 and result.points.shape == (0, 4)
         assert result.tie_sets.offsets.tolist() == [0]
         assert_equals_cli_json(result, cli_vertices_json(balls))
+
+
+def test_stats_of_the_octree(protein_1j3h):
+    octree = apollonius3d.vertices(*protein_1j3h, stats=True).stats["octree"]
+    assert octree["seed_boxes"] > 0 and octree["leaves"] > 0 and octree["refinement_seconds"] >= 0
+    assert not octree["lifted_fallback"] and not octree["lifted_small_input"]

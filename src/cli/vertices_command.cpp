@@ -17,7 +17,7 @@ struct Vertices_command {
   std::string output;
   std::string format;  // empty: json for an OUT ending in .json, else text
   bool stats = false;
-  std::string algorithm = "octree";
+  std::string algorithm = "auto";
   std::string arithmetic = "certified";
   std::vector<double> box;  // empty, or X0 Y0 Z0 X1 Y1 Z1
   Diagram_options diagram;
@@ -43,7 +43,8 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
   // The lifted fallback (octree_diagram.h, step 5), only when it ran.
   if (s.lifted_fallback)
-    err << "lifted fallback\nlifted_seconds " << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
+    err << "lifted fallback\nlifted_reason " << (s.lifted_small_input ? "small_input" : "box_budget") << "\nlifted_seconds "
+        << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
 }
 
 int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
@@ -65,7 +66,9 @@ int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
   reset_predicate_statistics();
   Octree_statistics octree_statistics;
   Octree_options options{command.diagram.threads, &octree_statistics, arithmetic};
-  if (command.algorithm == "lifted") options.box_budget = 0;  // straight to step 5 (octree_diagram.h)
+  // auto: the options' defaults. octree: never straight to step 5 (octree_diagram.h), only past the budget.
+  if (command.algorithm == "lifted") options.box_budget = 0;
+  if (command.algorithm == "octree") options.lifted_at_most_sites = 0;
   Diagram diagram = brute_force ? brute_force_diagram(input.sites) : octree_diagram(input.sites, options);
   if (box) restrict_to_box(diagram, *box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
@@ -98,9 +101,10 @@ Command_run add_vertices_command(CLI::App& app) {
   sub->add_option("--format", command->format, "text or json (default: json for an OUT ending in .json)")
       ->check(CLI::IsMember({"text", "json"}));
   sub->add_option("--algorithm", command->algorithm,
-                  "octree (paper section 5.2; it turns to lifted past 512 boxes per site), lifted (the 3-faces of\n"
-                  "the lifted regular triangulation in R^4), or brute (the O(n^5) reference)")
-      ->check(CLI::IsMember({"octree", "lifted", "brute"}))
+                  "auto (lifted up to 128 active sites, else octree), octree (paper section 5.2; it turns to\n"
+                  "lifted past 512 boxes per site), lifted (the 3-faces of the lifted regular triangulation in\n"
+                  "R^4), or brute (the O(n^5) reference); all but brute give the same bytes")
+      ->check(CLI::IsMember({"auto", "octree", "lifted", "brute"}))
       ->capture_default_str();
   sub->add_option("--arith", command->arithmetic,
                   "certified, or float: the octree in plain doubles, uncertified, for comparison only")

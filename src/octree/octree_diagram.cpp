@@ -124,8 +124,14 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     return list;
   });
   std::vector<std::vector<Found_vertex>> lists;
+  const std::size_t budget_boxes =
+      options.box_budget.value_or(kBoxesPerSiteBeforeLifted * active.size() + kBoxesBeforeLifted);
+  // A budget of 0 (step 5 asked for) is its own reason, for --stats.
+  const bool small_input = options.regions == nullptr && options.arithmetic == Arithmetic::certified &&
+                           budget_boxes > 0 && active.size() <= options.lifted_at_most_sites;
   const std::size_t box_limit = options.regions != nullptr ? std::numeric_limits<std::size_t>::max()
-                                : options.box_budget.value_or(kBoxesPerSiteBeforeLifted * active.size() + kBoxesBeforeLifted);
+                                : small_input                ? 0
+                                                             : budget_boxes;
   Box_budget budget(box_limit);
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
@@ -232,6 +238,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics = Octree_statistics{};
     statistics.boxes = budget.spent();
     statistics.lifted_fallback = true;
+    statistics.lifted_small_input = small_input;
     Lap_timer lifted_timer;
     arena.execute([&] {
       const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);

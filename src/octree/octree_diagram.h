@@ -20,6 +20,9 @@
 //     (whose weights 2 w^2 are seldom doubles, so CGAL's lazy exact kernel decides). Cost: at most the
 //     budget's boxes plus the triangulation, O(n log n) expected for n lifts in general position. Both
 //     decide every vertex exactly, so the output is the same whichever ran, for every thread count.
+//     Small inputs (at most 128 active sites, certified arithmetic) go to step 5 at once: there the
+//     triangulation is faster on every generated family and protein fragment measured, by up to 6 times
+//     where the octree's depth or exact stages dominate (docs/benchmarks.md, "Small inputs").
 //
 // Completeness. Removing a candidate is certified (centre_expansion.h): the site is strictly farther than
 // another at every point of the box. So every box's candidates include every site that owns a point of
@@ -50,6 +53,7 @@ struct Octree_statistics {
   // The lifted fallback (step 5): its time and its 3-faces. The counts above then stay 0, but boxes: those
   // the refinement had reported to the budget when it stopped.
   bool lifted_fallback = false;
+  bool lifted_small_input = false;  // it ran because of Octree_options::lifted_at_most_sites, not the budget
   double lifted_seconds = 0;
   std::size_t lifted_quadruples = 0;
 };
@@ -99,6 +103,9 @@ struct Octree_options {
   // The boxes the refinement may spend before step 5 takes over; automatic (512 per active site, plus
   // 16,384) when not given, and 0 goes to step 5 at once. Ignored (never spent) when regions are asked for.
   std::optional<std::size_t> box_budget{};
+  // Inputs of at most this many active sites go to step 5 at once, when only the vertices are asked for and
+  // the arithmetic is certified (the floating path is the octree's, for comparison); 0: never.
+  std::size_t lifted_at_most_sites = 128;
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

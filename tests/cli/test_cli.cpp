@@ -238,13 +238,19 @@ TEST_CASE("vertices of a generated file are the vertices of the generated sites"
     std::ostringstream expected;
     write_vertices_text(expected, brute_force_diagram(generate_sites(site_family_from_name(name), 9, 5)));
     CHECK(!expected.str().empty());
-    for (const char* algorithm : {"brute", "octree", "lifted"}) {
+    // auto, the default, takes the lifted triangulation for these 9 sites (at most 128 active ones).
+    for (const std::string algorithm : {"brute", "octree", "lifted", "auto"}) {
       CAPTURE(algorithm);
       const Cli_result r = run({"vertices", file, "--algorithm", algorithm, "--stats"});
       REQUIRE(r.code == EXIT_OK);
       CHECK(r.out == expected.str());
-      CHECK((r.err.find("lifted fallback") != std::string::npos) == (std::string(algorithm) == "lifted"));
+      CHECK((r.err.find("lifted fallback") != std::string::npos) == (algorithm == "lifted" || algorithm == "auto"));
+      CHECK((r.err.find("lifted_reason small_input") != std::string::npos) == (algorithm == "auto"));
+      CHECK((r.err.find("lifted_reason box_budget") != std::string::npos) == (algorithm == "lifted"));
     }
+    const Cli_result by_default = run({"vertices", file, "--stats"});
+    CHECK(by_default.out == expected.str());
+    CHECK(by_default.err.find("lifted_reason small_input") != std::string::npos);
   }
 }
 

@@ -38,10 +38,12 @@ void check_same(const Diagram& a, const Diagram& b) {
   CHECK(a.sites_without_vertex == b.sites_without_vertex);
 }
 
-Octree_options with(const Cancellation* cancellation, int threads = 1) {
+// The octree (never straight to step 5 for a small input) unless lifted_at_most_sites says otherwise.
+Octree_options with(const Cancellation* cancellation, int threads = 1, std::size_t lifted_at_most_sites = 0) {
   Octree_options options;
   options.threads = threads;
   options.cancellation = cancellation;
+  options.lifted_at_most_sites = lifted_at_most_sites;
   return options;
 }
 
@@ -55,6 +57,7 @@ TEST_CASE("a cancellation that is never requested changes nothing") {
       const std::vector<Site> sites = generate_sites(f.family, 60, 7);
       const Cancellation never;
       check_same(octree_diagram(sites, with(&never, threads)), octree_diagram(sites, with(nullptr, threads)));
+      check_same(octree_diagram(sites, with(&never, threads, 128)), octree_diagram(sites, with(nullptr, threads)));
     }
   }
 }
@@ -65,6 +68,7 @@ TEST_CASE("a cancellation requested before the call stops it, and every phase ch
   cancellation.request();
   CHECK_THROWS_AS(octree_diagram(sites, with(&cancellation)), Cancelled);
   CHECK_THROWS_AS(octree_diagram(sites, with(&cancellation, 2)), Cancelled);
+  CHECK_THROWS_AS(octree_diagram(sites, with(&cancellation, 1, sites.size())), Cancelled);  // the lifted path
   CHECK_THROWS_AS(classify_hidden_sites<Certified_kernel>(sites, &cancellation), Cancelled);
 
   std::vector<Site_index> all(sites.size());

@@ -28,8 +28,9 @@ void check_same(const Diagram& octree, const Diagram& reference) {
   CHECK(octree.sites_without_vertex == reference.sites_without_vertex);
 }
 
-// The octree with no box budget (so that its own rules are what the regression tests) and with the
-// automatic one (octree_diagram.h, step 5), both against the brute force. Returns the statistics of the
+// The octree with no box budget and never straight to step 5 (so that its own rules are what the
+// regression tests), and with the defaults (octree_diagram.h, step 5: the lifted triangulation at once for
+// at most 128 active sites, else past the automatic budget), both against the brute force. Returns the statistics of the
 // first, for the regressions that were about the octree's amount of work.
 Octree_statistics check_octree_equals_brute_force(const std::string& name, const std::string& folder = "regression") {
   CAPTURE(name);
@@ -40,6 +41,7 @@ Octree_statistics check_octree_equals_brute_force(const std::string& name, const
   Octree_options unlimited;
   unlimited.statistics = &statistics;
   unlimited.box_budget = std::numeric_limits<std::size_t>::max();
+  unlimited.lifted_at_most_sites = 0;
   check_same(octree_diagram(sites, unlimited), reference);
   CHECK_FALSE(statistics.lifted_fallback);
   check_same(octree_diagram(sites), reference);

@@ -108,7 +108,9 @@ TEST_CASE("octree equals brute force on every generator family") {
       const Diagram reference = reference_diagram(family, n, seed);
       reference_limit.stop();
       Input_time_limit octree_limit(time_limit(), input + " (octree)");
-      const Diagram octree = octree_diagram(sites);
+      Octree_options octree_only;
+      octree_only.lifted_at_most_sites = 0;  // these inputs are small: the default would take step 5 at once
+      const Diagram octree = octree_diagram(sites, octree_only);
       const double seconds = octree_limit.stop();
       if (seconds > report_over()) MESSAGE("octree " << seconds << " s: " << input);
       slowest = std::max(slowest, std::make_pair(seconds, input));
@@ -140,7 +142,9 @@ TEST_CASE("octree equals brute force on the small vdrc sets") {
   for (const char* name : {"ANO1_0CONNECT", "ANO3_3CONNECT", "Vis_I_10", "Vis_II_5", "Vis_III_5", "Vis_V_20", "Vis_VII_20"}) {
     CAPTURE(name);
     const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", {}).sites;
-    const Diagram octree = octree_diagram(sites);
+    Octree_options octree_only;
+    octree_only.lifted_at_most_sites = 0;
+    const Diagram octree = octree_diagram(sites, octree_only);
     validate_diagram(octree, sites);
     const Diagram reference = brute_force_diagram(sites);
     check_same(octree, reference);
@@ -152,10 +156,14 @@ TEST_CASE("octree equals brute force on the small vdrc sets") {
 
 TEST_CASE("the output does not depend on the number of threads") {
   const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/pept.balls", {}).sites;
-  const Diagram one = octree_diagram(sites, Octree_options{1});
+  Octree_options octree_only{1};
+  octree_only.lifted_at_most_sites = 0;  // pept has 107 sites
+  const Diagram one = octree_diagram(sites, octree_only);
   validate_diagram(one, sites);
   for (int threads : {2, 3, 8}) {
     CAPTURE(threads);
+    octree_only.threads = threads;
+    check_same(octree_diagram(sites, octree_only), one);
     check_same(octree_diagram(sites, Octree_options{threads}), one);
     Octree_options lifted_only{threads};
     lifted_only.box_budget = 0;
@@ -170,6 +178,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
   Octree_statistics unlimited_statistics;
   Octree_options unlimited{1, &unlimited_statistics};
   unlimited.box_budget = std::numeric_limits<std::size_t>::max();
+  unlimited.lifted_at_most_sites = 0;
   const Diagram octree = octree_diagram(sites, unlimited);
   CHECK_FALSE(unlimited_statistics.lifted_fallback);
   REQUIRE(unlimited_statistics.boxes > 4096);
@@ -178,8 +187,10 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     Octree_statistics statistics;
     Octree_options budgeted{threads, &statistics};
     budgeted.box_budget = 2048;
+    budgeted.lifted_at_most_sites = 0;
     check_same(octree_diagram(sites, budgeted), octree);
     CHECK(statistics.lifted_fallback);
+    CHECK_FALSE(statistics.lifted_small_input);
     CHECK(statistics.boxes >= 2048);
     CHECK(statistics.lifted_quadruples > 0);
 
@@ -191,5 +202,39 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     check_same(octree_diagram(sites, with_regions), octree);
     CHECK_FALSE(with_regions_statistics.lifted_fallback);
     CHECK(with_regions_statistics.boxes == unlimited_statistics.boxes);
+  }
+}
+
+// Small inputs (octree_diagram.h, step 5): at most lifted_at_most_sites active sites go to the lifted
+// triangulation at once, with the octree's output; not with regions, nor on the floating path.
+TEST_CASE("small inputs go to the lifted triangulation at once") {
+  for (const std::size_t n : {std::size_t{20}, std::size_t{128}, std::size_t{129}, std::size_t{300}}) {
+    CAPTURE(n);
+    const std::vector<Site> sites = generate_sites(Site_family::uniform, n, 5);
+    Octree_options octree_only;
+    octree_only.lifted_at_most_sites = 0;
+    Octree_statistics octree_statistics;
+    octree_only.statistics = &octree_statistics;
+    const Diagram octree = octree_diagram(sites, octree_only);
+    const std::size_t active = sites.size() - octree.hidden.size();
+    CHECK_FALSE(octree_statistics.lifted_fallback);
+
+    Octree_statistics statistics;
+    const Diagram automatic = octree_diagram(sites, Octree_options{1, &statistics});
+    check_same(automatic, octree);
+    CHECK(statistics.lifted_fallback == (active <= 128));
+    CHECK(statistics.lifted_small_input == (active <= 128));
+    CHECK(statistics.boxes == (active <= 128 ? 0 : octree_statistics.boxes));
+
+    Octree_statistics with_regions_statistics;
+    Octree_regions regions;
+    Octree_options with_regions{1, &with_regions_statistics};
+    with_regions.regions = &regions;
+    check_same(octree_diagram(sites, with_regions), octree);
+    CHECK_FALSE(with_regions_statistics.lifted_fallback);
+
+    Octree_statistics floating_statistics;
+    octree_diagram(sites, Octree_options{1, &floating_statistics, Arithmetic::floating});
+    CHECK_FALSE(floating_statistics.lifted_fallback);
   }
 }
