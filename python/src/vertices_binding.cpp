@@ -66,8 +66,11 @@ void bind_vertices(py::module_& module) {
   bind_vertices_result(module);
   module.def(
       "vertices",
-      [](const py::object& centres, const py::object& weights, int threads, const py::object& box, bool stats) {
+      [](const py::object& centres, const py::object& weights, int threads, const py::object& box, bool stats,
+         const std::string& algorithm) {
         check_thread_count(threads);
+        if (algorithm != "auto" && algorithm != "octree" && algorithm != "lifted")
+          throw py::value_error("algorithm: '" + algorithm + "' is not one of auto, octree, lifted");
         const std::vector<Site> sites = sites_from_python(centres, weights);
         const std::optional<Axis_box> restriction = box_from_python(box);
         if (stats) reset_predicate_statistics();
@@ -77,6 +80,9 @@ void bind_vertices(py::module_& module) {
           options.threads = threads;
           options.statistics = &c.octree;
           options.cancellation = &cancellation;
+          // As the command line's --algorithm: auto keeps the options' defaults.
+          if (algorithm == "octree") options.lifted_at_most_sites = 0;
+          if (algorithm == "lifted") options.box_budget = 0;
           c.diagram = octree_diagram(sites, options);
           if (restriction) restrict_to_box(c.diagram, *restriction);
           return c;
@@ -86,7 +92,8 @@ void bind_vertices(py::module_& module) {
         return vertices_to_python(computed.diagram, stats ? py::object(stats_to_python(computed)) : py::none());
       },
       "centres"_a, "weights"_a, py::kw_only(), "threads"_a = 1, "box"_a = py::none(), "stats"_a = false,
-      R"(vertices(centres, weights, *, threads=1, box=None, stats=False) -> Vertices
+      "algorithm"_a = "auto",
+      R"(vertices(centres, weights, *, threads=1, box=None, stats=False, algorithm="auto") -> Vertices
 
 Every vertex of the Apollonius diagram of the sites in R^3, exactly (the command line's 'vertices'):
 the points where 4 or more sites are at equal least weighted distance |x - c_i| - w_i, with the whole
@@ -98,6 +105,8 @@ threads: 1 to 1024 worker threads; the result is the same for every number.
 box: None, or (X0, Y0, Z0, X1, Y1, Z1): only the vertices whose centre lies in that closed box.
 stats: also count the predicates and their exact stages (counters shared by the whole process:
 concurrent computations in other threads add to them) and report the octree's phases.
+algorithm: "auto" (the lifted triangulation for at most 128 sites that are not hidden, else the octree),
+"octree" or "lifted", as the command line's --algorithm; the same answer from each.
 Returns Vertices: .points (m, 4), .tie_sets, .hidden, .sites_without_vertex, .stats.
 Raises ValueError for bad input (wrong shape, no exact float64, NaN or infinity, no site), with the
 command line's kind of message, e.g. "centres: site 3, z: not a finite number: nan". The computation

@@ -187,3 +187,19 @@ def test_stats_of_the_octree(protein_1j3h):
     octree = apollonius3d.vertices(*protein_1j3h, stats=True).stats["octree"]
     assert octree["seed_boxes"] > 0 and octree["leaves"] > 0 and octree["refinement_seconds"] >= 0
     assert not octree["lifted_fallback"] and not octree["lifted_small_input"]
+
+
+@pytest.mark.parametrize("algorithm", ["auto", "octree", "lifted"])
+def test_every_algorithm_gives_the_command_lines_answer(pept_pdb, algorithm):
+    # pept's 107 sites: auto takes the lifted triangulation, octree the octree, lifted the triangulation.
+    result = apollonius3d.vertices(*apollonius3d.read_sites(pept_pdb), algorithm=algorithm, stats=True)
+    assert_equals_cli_json(result, cli_vertices_json(pept_pdb, "--algorithm", algorithm))
+    octree = result.stats["octree"]
+    assert octree["lifted_fallback"] == (algorithm != "octree")
+    assert octree["lifted_small_input"] == (algorithm == "auto")
+    assert (octree["seed_boxes"] > 0) == (algorithm == "octree")
+
+
+def test_an_unknown_algorithm_is_a_value_error():
+    with pytest.raises(ValueError, match="algorithm: 'brute' is not one of auto, octree, lifted"):
+        apollonius3d.vertices([[0, 0, 0]], [1], algorithm="brute")
