@@ -12,6 +12,7 @@
 #include "interruptible_call.h"
 #include "io/input_error.h"
 #include "octree/octree_diagram.h"
+#include "octree/vertex_algorithm.h"
 #include "predicates/predicate_counter.h"
 #include "site_arrays.h"
 #include "thread_count.h"
@@ -41,8 +42,8 @@ py::dict stats_to_python(const Computed& computed) {
                   "seed_candidates"_a = o.seed_candidates, "escaping_sites"_a = o.escaping_sites, "boxes"_a = o.boxes,
                   "leaves"_a = o.leaves, "leaf_candidates"_a = o.leaf_candidates, "quadruples"_a = o.quadruples,
                   "distinct_quadruples"_a = o.distinct_quadruples, "far_field_quadruples"_a = o.far_field_quadruples,
-                  "lifted_fallback"_a = o.lifted_fallback, "lifted_small_input"_a = o.lifted_small_input, "lifted_seconds"_a = o.lifted_seconds,
-                  "lifted_quadruples"_a = o.lifted_quadruples);
+                  "lifted_fallback"_a = o.lifted_fallback, "lifted_small_input"_a = o.lifted_small_input,
+                  "lifted_seconds"_a = o.lifted_seconds, "lifted_quadruples"_a = o.lifted_quadruples);
   return py::dict("predicates"_a = predicates, "octree"_a = octree);
 }
 
@@ -69,20 +70,18 @@ void bind_vertices(py::module_& module) {
       [](const py::object& centres, const py::object& weights, int threads, const py::object& box, bool stats,
          const std::string& algorithm) {
         check_thread_count(threads);
-        if (algorithm != "auto" && algorithm != "octree" && algorithm != "lifted")
+        Octree_options algorithm_options;
+        if (!use_vertex_algorithm(algorithm, algorithm_options))
           throw py::value_error("algorithm: '" + algorithm + "' is not one of auto, octree, lifted");
         const std::vector<Site> sites = sites_from_python(centres, weights);
         const std::optional<Axis_box> restriction = box_from_python(box);
         if (stats) reset_predicate_statistics();
         Computed computed = interruptible_call([&](const Cancellation& cancellation) {
           Computed c;
-          Octree_options options;
+          Octree_options options = algorithm_options;
           options.threads = threads;
           options.statistics = &c.octree;
           options.cancellation = &cancellation;
-          // As the command line's --algorithm: auto keeps the options' defaults.
-          if (algorithm == "octree") options.lifted_at_most_sites = 0;
-          if (algorithm == "lifted") options.box_budget = 0;
           c.diagram = octree_diagram(sites, options);
           if (restriction) restrict_to_box(c.diagram, *restriction);
           return c;

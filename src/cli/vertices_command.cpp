@@ -1,11 +1,14 @@
 #include "cli/vertices_command.h"
 
+#include <iterator>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "io/write_vertices.h"
 #include "octree/octree_diagram.h"
+#include "octree/vertex_algorithm.h"
 #include "predicates/predicate_counter.h"
 #include "reference/brute_force_diagram.h"
 
@@ -66,9 +69,7 @@ int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
   reset_predicate_statistics();
   Octree_statistics octree_statistics;
   Octree_options options{command.diagram.threads, &octree_statistics, arithmetic};
-  // auto: the options' defaults. octree: never straight to step 5 (octree_diagram.h), only past the budget.
-  if (command.algorithm == "lifted") options.box_budget = 0;
-  if (command.algorithm == "octree") options.lifted_at_most_sites = 0;
+  if (!brute_force) use_vertex_algorithm(command.algorithm, options);  // a name CLI11 checked
   Diagram diagram = brute_force ? brute_force_diagram(input.sites) : octree_diagram(input.sites, options);
   if (box) restrict_to_box(diagram, *box);
   const std::vector<Predicate_statistics> stats = predicate_statistics();
@@ -104,7 +105,11 @@ Command_run add_vertices_command(CLI::App& app) {
                   "auto (lifted up to 128 active sites, else octree), octree (paper section 5.2; it turns to\n"
                   "lifted past 512 boxes per site), lifted (the 3-faces of the lifted regular triangulation in\n"
                   "R^4), or brute (the O(n^5) reference); all but brute give the same bytes")
-      ->check(CLI::IsMember({"auto", "octree", "lifted", "brute"}))
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names(std::begin(kVertexAlgorithms), std::end(kVertexAlgorithms));
+        names.push_back("brute");
+        return names;
+      }()))
       ->capture_default_str();
   sub->add_option("--arith", command->arithmetic,
                   "certified, or float: the octree in plain doubles, uncertified, for comparison only")

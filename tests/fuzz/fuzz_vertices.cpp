@@ -6,8 +6,8 @@
 // Exceptions. Neither algorithm may throw on a finite input, with one exception, accepted here as a
 // documented limitation and not as an answer: the octree refuses with std::overflow_error ("the far
 // field of this input exceeds the double range") when its root box, 2 * 256 times the half-extent of the
-// seed grid around the centres, overflows; the lifted path must answer even then. That needs a centre coordinate beyond 2^-12 of the double range;
-// the same exception for any smaller input, and every other exception (std::logic_error from a vertex
+// seed grid around the centres, overflows; the lifted path must answer even then. That needs a centre
+// coordinate beyond 2^-12 of the double range; the same exception for any smaller input, and every other exception (std::logic_error from a vertex
 // whose exact root vanished, Uncertain_sign leaking out of a filter, ...), is a bug: it escapes and
 // libFuzzer reports it. The limitation itself is a gap against docs/contract.md, "The diagram" (sites are any doubles;
 // the brute force answers them): `vertices --algorithm octree` exits 3 on such input, where the default
