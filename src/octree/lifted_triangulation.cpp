@@ -1,6 +1,5 @@
 #include "octree/lifted_triangulation.h"
 
-#include <CGAL/Epeck_d.h>
 #include <CGAL/Epick_d.h>
 #include <CGAL/Mpzf.h>
 #include <CGAL/Regular_triangulation.h>
@@ -16,25 +15,50 @@
 namespace apollonius {
 namespace {
 
+// The lifts' power weights 2 w^2 are rarely doubles (w = 1.7 squares to 106 bits; w = 1e200 overflows).
+// So the weighted point's weight slot holds w itself, and the kernels that decide (intervals, then Mpzf or
+// mpq) read it as 2 w^2: exact on the exact kernels, certified on intervals. The double kernel, which
+// decides nothing here, keeps w: the triangulation compares its weights only for equality, between lifts
+// at one point of R^4 and so of one w (Regular_triangulation::insert, ON_VERTEX).
+template <class R_>
+struct Power_weight_of_lift {
+  CGAL_FUNCTOR_INIT_IGNORE(Power_weight_of_lift)
+  using argument_type = typename CGAL::Get_type<R_, CGAL::Weighted_point_tag>::type;
+  using result_type = typename CGAL::Get_type<R_, CGAL::FT_tag>::type;
+  result_type operator()(const argument_type& lift) const {
+    const result_type& w = lift.weight();
+    return result_type(2) * w * w;
+  }
+};
+template <class FT>
+struct Power_weight_kernel : CGAL::Cartesian_base_d<FT, CGAL::Dimension_tag<4>> {
+  using Base = CGAL::Cartesian_base_d<FT, CGAL::Dimension_tag<4>>;
+  template <class Tag, class D = void>
+  struct Functor : CGAL::Inherit_functor<Base, Tag, D> {};
+  template <class D>
+  struct Functor<CGAL::Point_weight_tag, D> {
+    using type = Power_weight_of_lift<Power_weight_kernel>;
+  };
+};
+
 // Epick_d<4> with its power test, a 5 x 5 determinant and so division-free, decided on CGAL::Mpzf where
 // the interval filter fails, as Epick_d already does its orientation; Epick_d falls back to mpq there,
 // whose every operation reduces a fraction (the lifts of nearly cospherical sites fail the filter often).
 using Dimension_4 = CGAL::Dimension_tag<4>;
 using Lift_kernel_fields = CGAL::Cartesian_filter_K<CGAL::Cartesian_base_d<double, Dimension_4>,
-                                                    CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, Dimension_4>,
-                                                    CGAL::Cartesian_base_d<CGAL::internal::Exact_field_selector<double>::Type, Dimension_4>>;
+                                                    Power_weight_kernel<CGAL::Interval_nt_advanced>,
+                                                    Power_weight_kernel<CGAL::internal::Exact_field_selector<double>::Type>>;
 using Division_free_lift_predicates =
     CGAL::typeset<CGAL::Orientation_of_points_tag, CGAL::Side_of_oriented_sphere_tag, CGAL::Power_side_of_power_sphere_tag>;
 struct Lift_kernel_rings
-    : CGAL::Cartesian_filter_K<Lift_kernel_fields, CGAL::Cartesian_base_d<CGAL::Interval_nt_advanced, Dimension_4>,
-                               CGAL::Cartesian_base_d<CGAL::Mpzf, Dimension_4>, Division_free_lift_predicates> {};
-struct Double_lift_kernel : CGAL::Kernel_d_interface<CGAL::Cartesian_wrap<Lift_kernel_rings, Double_lift_kernel>> {};
+    : CGAL::Cartesian_filter_K<Lift_kernel_fields, Power_weight_kernel<CGAL::Interval_nt_advanced>,
+                               Power_weight_kernel<CGAL::Mpzf>, Division_free_lift_predicates> {};
+struct Lift_kernel : CGAL::Kernel_d_interface<CGAL::Cartesian_wrap<Lift_kernel_rings, Lift_kernel>> {};
 
 struct Lifted_site {
   std::int64_t index = -1;     // the site's index, -1 until set
   std::size_t position = 0;    // its position in the sorted subset, once every site is inserted
 };
-template <class Lift_kernel>
 using Lift_triangulation = CGAL::Regular_triangulation<
     Lift_kernel,
     CGAL::Triangulation_data_structure<
@@ -42,18 +66,17 @@ using Lift_triangulation = CGAL::Regular_triangulation<
         CGAL::Triangulation_vertex<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>, Lifted_site>,
         CGAL::Triangulation_full_cell<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>>>>;
 
-template <class Lift_kernel>
 Lifted_triangulation triangulation_with(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
                                         const Cancellation* cancellation) {
-  using Triangulation = Lift_triangulation<Lift_kernel>;
+  using Triangulation = Lift_triangulation;
   using FT = typename Lift_kernel::FT;
   Triangulation triangulation(4);
 
   for (std::size_t k = 0; k < subset.size(); ++k) {
     if (k % 256 == 0) throw_if_cancelled(cancellation);
     const Site& s = sites[subset[k]];
-    const FT w(s.w);
-    const typename Triangulation::Weighted_point lift(typename Lift_kernel::Point_d(FT(s.x), FT(s.y), FT(s.z), w), FT(2) * w * w);
+    const FT w(s.w);  // the power weight 2 w^2 (Power_weight_kernel)
+    const typename Triangulation::Weighted_point lift(typename Lift_kernel::Point_d(FT(s.x), FT(s.y), FT(s.z), w), w);
     const typename Triangulation::Vertex_handle v = triangulation.insert(lift);
     // A repeated lift is a repeated site: the first keeps the vertex (tie sets are completed by the caller).
     if (v != typename Triangulation::Vertex_handle() && v->data().index < 0) v->data().index = subset[k];
@@ -143,15 +166,7 @@ const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s)
 
 Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
                                           const Cancellation* cancellation) {
-  // The lifts' weights 2 w^2 are doubles exactly when w^2 is: then the filtered kernel of doubles decides
-  // exactly, else the lazy exact one.
-  const bool exact_squares = std::all_of(subset.begin(), subset.end(), [&](Site_index s) {
-    const double w = sites[s].w;
-    // (A square below 2^-969 could hide its rounding error below the subnormals.)
-    return w == 0 || (std::fma(w, w, -(w * w)) == 0 && std::abs(w * w) >= 0x1p-969 && std::isfinite(2 * w * w));
-  });
-  if (exact_squares) return triangulation_with<Double_lift_kernel>(sites, subset, cancellation);
-  return triangulation_with<CGAL::Epeck_d<CGAL::Dimension_tag<4>>>(sites, subset, cancellation);
+  return triangulation_with(sites, subset, cancellation);
 }
 
 }  // namespace apollonius

@@ -49,7 +49,7 @@ struct Lifted_triangulation {
 };
 
 // The quadruples of the sites of `subset` spanning a 3-face of the regular triangulation of their lifts,
-// with its edges. Exact (CGAL's Epeck_d, or Epick_d with Mpzf where the weights square exactly). Cost:
+// with its edges. Exact: intervals, then Mpzf (lifted_triangulation.cpp, Power_weight_kernel). Cost:
 // O(k log k) expected for the triangulation of k lifts in general position, plus its size.
 Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
                                           const Cancellation* cancellation = nullptr);
