@@ -104,7 +104,7 @@ threads: 1 to 1024 worker threads; the result is the same for every number.
 box: None, or (X0, Y0, Z0, X1, Y1, Z1): only the vertices whose centre lies in that closed box.
 stats: also count the predicates and their exact stages (counters shared by the whole process:
 concurrent computations in other threads add to them) and report the octree's phases.
-algorithm: "auto" (the lifted triangulation for at most 128 sites that are not hidden, else the octree),
+algorithm: "auto" (the lifted triangulation for at most 256 sites that are not hidden, else the octree),
 "octree" or "lifted", as the command line's --algorithm; the same answer from each.
 Returns Vertices: .points (m, 4), .tie_sets, .hidden, .sites_without_vertex, .stats.
 Raises ValueError for bad input (wrong shape, no exact float64, NaN or infinity, no site), with the

@@ -56,7 +56,7 @@ def test_stats_as_the_command_lines(pept_pdb):
     ran = [p for p in result.stats["predicates"] if p["evaluations"] > 0]
     assert ran == [p for p in cli_vertices_json(pept_pdb, "--stats")["stats"]["predicates"] if p["evaluations"] > 0]
     assert {"vertices_of", "vertex_conflict"} <= {p["name"] for p in ran}
-    # pept's 107 sites go to the lifted triangulation at once (at most 128 active sites); 1j3h to the octree.
+    # pept's 107 sites go to the lifted triangulation at once (at most 256 active sites); 1j3h to the octree.
     octree = result.stats["octree"]
     assert octree["lifted_fallback"] and octree["lifted_small_input"] and octree["lifted_quadruples"] > 0
     assert octree["seed_boxes"] == 0 and octree["boxes"] == 0

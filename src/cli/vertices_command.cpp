@@ -102,7 +102,7 @@ Command_run add_vertices_command(CLI::App& app) {
   sub->add_option("--format", command->format, "text or json (default: json for an OUT ending in .json)")
       ->check(CLI::IsMember({"text", "json"}));
   sub->add_option("--algorithm", command->algorithm,
-                  "auto (lifted up to 128 active sites, else octree), octree (paper section 5.2; it turns to\n"
+                  "auto (lifted up to 256 active sites, else octree), octree (paper section 5.2; it turns to\n"
                   "lifted past 512 boxes per site), lifted (the 3-faces of the lifted regular triangulation in\n"
                   "R^4), or brute (the O(n^5) reference); all but brute give the same bytes")
       ->check(CLI::IsMember([] {

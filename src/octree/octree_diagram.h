@@ -16,13 +16,14 @@
 //     the octree's box count grow far faster than the sites while the triangulation stays small: 1,000
 //     balls tangent to one circle, all tied at its centre, took over 120 s and 8 million boxes beside the
 //     circle; the triangulation of their lifts has 9,583 3-faces. On the benchmark inputs the octree uses
-//     8 to 60 boxes per site and never reaches the budget; there it is twice as fast as the triangulation
-//     (whose weights 2 w^2 are seldom doubles, so CGAL's lazy exact kernel decides). Cost: at most the
-//     budget's boxes plus the triangulation, O(n log n) expected for n lifts in general position. Both
-//     decide every vertex exactly, so the output is the same whichever ran, for every thread count.
-//     Small inputs (at most 128 active sites, certified arithmetic) go to step 5 at once: there the
-//     triangulation is faster on every generated family and protein fragment measured, by up to 6 times
-//     where the octree's depth or exact stages dominate (docs/benchmarks.md, "Small inputs").
+//     8 to 60 boxes per site and never reaches the budget; there it is about twice as fast as the
+//     triangulation at thousands of sites. Cost: at most the budget's boxes plus the triangulation,
+//     O(n log n) expected for n lifts in general position. Both decide every vertex exactly, so the
+//     output is the same whichever ran, for every thread count.
+//     Small inputs (at most 256 active sites, certified arithmetic) go to step 5 at once: there the
+//     triangulation is as fast or faster on all but one generated family and protein fragments measured
+//     (balls tangent to one sphere: 0.86), by up to 5 times where the octree's depth or exact stages
+//     dominate (docs/benchmarks.md, "Small inputs").
 //
 // Completeness. Removing a candidate is certified (centre_expansion.h): the site is strictly farther than
 // another at every point of the box. So every box's candidates include every site that owns a point of
@@ -105,7 +106,7 @@ struct Octree_options {
   std::optional<std::size_t> box_budget{};
   // Inputs of at most this many active sites go to step 5 at once, when only the vertices are asked for and
   // the arithmetic is certified (the floating path is the octree's, for comparison); 0: never.
-  std::size_t lifted_at_most_sites = 128;
+  std::size_t lifted_at_most_sites = 256;
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

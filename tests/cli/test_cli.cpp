@@ -238,7 +238,7 @@ TEST_CASE("vertices of a generated file are the vertices of the generated sites"
     std::ostringstream expected;
     write_vertices_text(expected, brute_force_diagram(generate_sites(site_family_from_name(name), 9, 5)));
     CHECK(!expected.str().empty());
-    // auto, the default, takes the lifted triangulation for these 9 sites (at most 128 active ones).
+    // auto, the default, takes the lifted triangulation for these 9 sites (at most 256 active ones).
     for (const std::string algorithm : {"brute", "octree", "lifted", "auto"}) {
       CAPTURE(algorithm);
       const Cli_result r = run({"vertices", file, "--algorithm", algorithm, "--stats"});

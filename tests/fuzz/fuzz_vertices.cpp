@@ -11,7 +11,7 @@
 // whose exact root vanished, Uncertain_sign leaking out of a filter, ...), is a bug: it escapes and
 // libFuzzer reports it. The limitation itself is a gap against docs/contract.md, "The diagram" (sites are any doubles;
 // the brute force answers them): `vertices --algorithm octree` exits 3 on such input, where the default
-// takes the lifted path for at most 128 active sites.
+// takes the lifted path for at most 256 active sites.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

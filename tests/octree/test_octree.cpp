@@ -208,7 +208,9 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
 // Small inputs (octree_diagram.h, step 5): at most lifted_at_most_sites active sites go to the lifted
 // triangulation at once, with the octree's output; not with regions, nor on the floating path.
 TEST_CASE("small inputs go to the lifted triangulation at once") {
-  for (const std::size_t n : {std::size_t{20}, std::size_t{128}, std::size_t{129}, std::size_t{300}}) {
+  const std::size_t limit = Octree_options{}.lifted_at_most_sites;
+  REQUIRE(limit > 20);
+  for (const std::size_t n : {std::size_t{20}, limit, limit + 1, limit + 150}) {
     CAPTURE(n);
     const std::vector<Site> sites = generate_sites(Site_family::uniform, n, 5);
     Octree_options octree_only;
@@ -222,9 +224,9 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
     Octree_statistics statistics;
     const Diagram automatic = octree_diagram(sites, Octree_options{1, &statistics});
     check_same(automatic, octree);
-    CHECK(statistics.lifted_fallback == (active <= 128));
-    CHECK(statistics.lifted_small_input == (active <= 128));
-    CHECK(statistics.boxes == (active <= 128 ? 0 : octree_statistics.boxes));
+    CHECK(statistics.lifted_fallback == (active <= limit));
+    CHECK(statistics.lifted_small_input == (active <= limit));
+    CHECK(statistics.boxes == (active <= limit ? 0 : octree_statistics.boxes));
 
     Octree_statistics with_regions_statistics;
     Octree_regions regions;
