@@ -5,7 +5,6 @@
 #include <CGAL/Regular_triangulation.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <tuple>
@@ -66,10 +65,18 @@ using Lift_triangulation = CGAL::Regular_triangulation<
         CGAL::Triangulation_vertex<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>, Lifted_site>,
         CGAL::Triangulation_full_cell<CGAL::Regular_triangulation_traits_adapter<Lift_kernel>>>>;
 
-Lifted_triangulation triangulation_with(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
-                                        const Cancellation* cancellation) {
+}  // namespace
+
+std::size_t Lifted_triangulation::position_of(Site_index s) const {
+  return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), s) - sites.begin());
+}
+
+const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s) const { return neighbours[position_of(s)]; }
+
+Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
+                                          const Cancellation* cancellation) {
   using Triangulation = Lift_triangulation;
-  using FT = typename Lift_kernel::FT;
+  using FT = Lift_kernel::FT;
   Triangulation triangulation(4);
 
   for (std::size_t k = 0; k < subset.size(); ++k) {
@@ -154,19 +161,6 @@ Lifted_triangulation triangulation_with(const std::vector<Site>& sites, const st
     result.apexes.push_back(apexes);
   }
   return result;
-}
-
-}  // namespace
-
-std::size_t Lifted_triangulation::position_of(Site_index s) const {
-  return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), s) - sites.begin());
-}
-
-const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s) const { return neighbours[position_of(s)]; }
-
-Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
-                                          const Cancellation* cancellation) {
-  return triangulation_with(sites, subset, cancellation);
 }
 
 }  // namespace apollonius
