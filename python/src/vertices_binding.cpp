@@ -71,8 +71,11 @@ void bind_vertices(py::module_& module) {
          const std::string& algorithm) {
         check_thread_count(threads);
         Octree_options algorithm_options;
-        if (!use_vertex_algorithm(algorithm, algorithm_options))
-          throw py::value_error("algorithm: '" + algorithm + "' is not one of auto, octree, lifted");
+        if (!use_vertex_algorithm(algorithm, algorithm_options)) {
+          std::string names;
+          for (const char* name : kVertexAlgorithms) names += std::string(names.empty() ? "" : ", ") + name;
+          throw py::value_error("algorithm: '" + algorithm + "' is not one of " + names);
+        }
         const std::vector<Site> sites = sites_from_python(centres, weights);
         const std::optional<Axis_box> restriction = box_from_python(box);
         if (stats) reset_predicate_statistics();

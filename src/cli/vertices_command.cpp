@@ -46,8 +46,8 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
   // The lifted fallback (octree_diagram.h, step 5), only when it ran.
   if (s.lifted_fallback)
-    err << "lifted fallback\nlifted_reason " << (s.lifted_small_input ? "small_input" : "box_budget") << "\nlifted_seconds "
-        << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
+    err << "lifted fallback\nlifted_reason " << (s.lifted_small_input ? "small_input" : "box_budget")
+        << "\nlifted_seconds " << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
 }
 
 int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {

@@ -44,9 +44,9 @@ struct Power_weight_kernel : CGAL::Cartesian_base_d<FT, CGAL::Dimension_tag<4>> 
 // the interval filter fails, as Epick_d already does its orientation; Epick_d falls back to mpq there,
 // whose every operation reduces a fraction (the lifts of nearly cospherical sites fail the filter often).
 using Dimension_4 = CGAL::Dimension_tag<4>;
-using Lift_kernel_fields = CGAL::Cartesian_filter_K<CGAL::Cartesian_base_d<double, Dimension_4>,
-                                                    Power_weight_kernel<CGAL::Interval_nt_advanced>,
-                                                    Power_weight_kernel<CGAL::internal::Exact_field_selector<double>::Type>>;
+using Lift_kernel_fields =
+    CGAL::Cartesian_filter_K<CGAL::Cartesian_base_d<double, Dimension_4>, Power_weight_kernel<CGAL::Interval_nt_advanced>,
+                             Power_weight_kernel<CGAL::internal::Exact_field_selector<double>::Type>>;
 using Division_free_lift_predicates =
     CGAL::typeset<CGAL::Orientation_of_points_tag, CGAL::Side_of_oriented_sphere_tag, CGAL::Power_side_of_power_sphere_tag>;
 struct Lift_kernel_rings
@@ -58,7 +58,7 @@ struct Lifted_site {
   std::int64_t index = -1;     // the site's index, -1 until set
   std::size_t position = 0;    // its position in the sorted subset, once every site is inserted
 };
-using Lift_triangulation = CGAL::Regular_triangulation<
+using Triangulation = CGAL::Regular_triangulation<
     Lift_kernel,
     CGAL::Triangulation_data_structure<
         CGAL::Dimension_tag<4>,
@@ -71,11 +71,12 @@ std::size_t Lifted_triangulation::position_of(Site_index s) const {
   return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), s) - sites.begin());
 }
 
-const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s) const { return neighbours[position_of(s)]; }
+const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s) const {
+  return neighbours[position_of(s)];
+}
 
 Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
                                           const Cancellation* cancellation) {
-  using Triangulation = Lift_triangulation;
   using FT = Lift_kernel::FT;
   Triangulation triangulation(4);
 
@@ -83,10 +84,10 @@ Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const 
     if (k % 256 == 0) throw_if_cancelled(cancellation);
     const Site& s = sites[subset[k]];
     const FT w(s.w);  // the power weight 2 w^2 (Power_weight_kernel)
-    const typename Triangulation::Weighted_point lift(typename Lift_kernel::Point_d(FT(s.x), FT(s.y), FT(s.z), w), w);
-    const typename Triangulation::Vertex_handle v = triangulation.insert(lift);
+    const Triangulation::Weighted_point lift(Lift_kernel::Point_d(FT(s.x), FT(s.y), FT(s.z), w), w);
+    const Triangulation::Vertex_handle v = triangulation.insert(lift);
     // A repeated lift is a repeated site: the first keeps the vertex (tie sets are completed by the caller).
-    if (v != typename Triangulation::Vertex_handle() && v->data().index < 0) v->data().index = subset[k];
+    if (v != Triangulation::Vertex_handle() && v->data().index < 0) v->data().index = subset[k];
   }
   Lifted_triangulation result;
   result.sites = subset;
@@ -104,13 +105,13 @@ Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const 
   // O(incident cells) per vertex, and no list longer than the neighbours (each edge lies in many cells).
   if (dimension >= 1) {
     std::vector<std::size_t> stamp(result.sites.size(), result.sites.size());
-    std::vector<typename Triangulation::Full_cell_const_handle> incident;
+    std::vector<Triangulation::Full_cell_const_handle> incident;
     for (auto v = triangulation.vertices_begin(); v != triangulation.vertices_end(); ++v) {
       if (triangulation.is_infinite(v)) continue;
       const std::size_t a = v->data().position;
       if (a % 256 == 0) throw_if_cancelled(cancellation);
       incident.clear();
-      triangulation.incident_full_cells(typename Triangulation::Vertex_const_handle(v), std::back_inserter(incident));
+      triangulation.incident_full_cells(Triangulation::Vertex_const_handle(v), std::back_inserter(incident));
       std::vector<Site_index>& list = result.neighbours[a];
       for (const auto& cell : incident)
         for (int j = 0; j <= dimension; ++j) {

@@ -7,11 +7,12 @@
 // documented limitation and not as an answer: the octree refuses with std::overflow_error ("the far
 // field of this input exceeds the double range") when its root box, 2 * 256 times the half-extent of the
 // seed grid around the centres, overflows; the lifted path must answer even then. That needs a centre
-// coordinate beyond 2^-12 of the double range; the same exception for any smaller input, and every other exception (std::logic_error from a vertex
-// whose exact root vanished, Uncertain_sign leaking out of a filter, ...), is a bug: it escapes and
-// libFuzzer reports it. The limitation itself is a gap against docs/contract.md, "The diagram" (sites are any doubles;
-// the brute force answers them): `vertices --algorithm octree` exits 3 on such input, where the default
-// takes the lifted path for at most 256 active sites.
+// coordinate beyond 2^-12 of the double range; the same exception for any smaller input, and every other
+// exception (std::logic_error from a vertex whose exact root vanished, Uncertain_sign leaking out of a
+// filter, ...), is a bug: it escapes and libFuzzer reports it. The limitation itself is a gap against
+// docs/contract.md, "The diagram" (sites are any doubles; the brute force answers them): `vertices
+// --algorithm octree` exits 3 on such input, where the default takes the lifted path for at most 256
+// active sites.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -73,7 +74,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   apollonius::Octree_options lifted_only;
   lifted_only.box_budget = 0;
   const Diagram lifted = apollonius::octree_diagram(sites, lifted_only);
-  for (const auto& [name, computed] : {std::pair<const char*, const Diagram*>{"octree", octree ? &*octree : nullptr}, {"lifted", &lifted}}) {
+  const Diagram* const octree_result = octree ? &*octree : nullptr;  // none past the range limit
+  for (const auto& [name, computed] : {std::pair<const char*, const Diagram*>{"octree", octree_result}, {"lifted", &lifted}}) {
     if (computed == nullptr || same_diagram(*computed, reference)) continue;
     std::cerr << name << " and brute force disagree on these sites:\n";
     apollonius::write_sites_text(std::cerr, sites, "fuzz_vertices input");

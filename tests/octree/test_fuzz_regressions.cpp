@@ -29,9 +29,9 @@ void check_same(const Diagram& octree, const Diagram& reference) {
 }
 
 // The octree with no box budget and never straight to step 5 (so that its own rules are what the
-// regression tests), and with the defaults (octree_diagram.h, step 5: the lifted triangulation at once for
-// at most 256 active sites, else past the automatic budget), both against the brute force. Returns the statistics of the
-// first, for the regressions that were about the octree's amount of work.
+// regression tests), and with the defaults (octree_diagram.h, step 5: the lifted triangulation at once
+// for at most 256 active sites, else past the automatic budget), both against the brute force. Returns
+// the statistics of the first, for the regressions that were about the octree's amount of work.
 Octree_statistics check_octree_equals_brute_force(const std::string& name, const std::string& folder = "regression") {
   CAPTURE(name);
   const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/" + folder + "/" + name, {}).sites;
