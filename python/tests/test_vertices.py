@@ -200,6 +200,22 @@ def test_every_algorithm_gives_the_command_lines_answer(pept_pdb, algorithm):
     assert (octree["seed_boxes"] > 0) == (algorithm == "octree")
 
 
+def test_balls_of_one_radius_take_the_delaunay_triangulation(tmp_path):
+    # 600 balls of radius 1.5 on a coarse grid (cospherical groups, repeats): auto goes straight to the
+    # lifted triangulation, here the Delaunay triangulation of the centres, with the octree's answer.
+    centres = np.random.default_rng(3).integers(0, 12, size=(600, 3)).astype(float)
+    weights = np.full(600, 1.5)
+    path = tmp_path / "one_radius.balls"
+    path.write_text("".join(f"{x:.17g} {y:.17g} {z:.17g} 1.5\n" for x, y, z in centres))
+    automatic = apollonius3d.vertices(centres, weights, stats=True)
+    octree = apollonius3d.vertices(centres, weights, algorithm="octree", stats=True)
+    assert_equals_cli_json(automatic, cli_vertices_json(path, "--algorithm", "octree"))
+    assert_equals_cli_json(octree, cli_vertices_json(path))
+    assert automatic.stats["octree"]["lifted_one_weight"] and automatic.stats["octree"]["boxes"] == 0
+    assert not octree.stats["octree"]["lifted_fallback"] and octree.stats["octree"]["boxes"] > 0
+    assert max(len(automatic.tie_sets[i]) for i in range(len(automatic))) > 4 and len(automatic.hidden) > 0
+
+
 def test_an_unknown_algorithm_is_a_value_error():
     with pytest.raises(ValueError, match="algorithm: 'brute' is not one of auto, octree, lifted"):
         apollonius3d.vertices([[0, 0, 0]], [1], algorithm="brute")

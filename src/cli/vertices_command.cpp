@@ -46,7 +46,7 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
   // The lifted fallback (octree_diagram.h, step 5), only when it ran.
   if (s.lifted_fallback)
-    err << "lifted fallback\nlifted_reason " << (s.lifted_small_input ? "small_input" : "box_budget")
+    err << "lifted fallback\nlifted_reason " << (s.lifted_small_input ? "small_input" : s.lifted_one_weight ? "one_weight" : "box_budget")
         << "\nlifted_seconds " << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
 }
 
@@ -102,9 +102,10 @@ Command_run add_vertices_command(CLI::App& app) {
   sub->add_option("--format", command->format, "text or json (default: json for an OUT ending in .json)")
       ->check(CLI::IsMember({"text", "json"}));
   sub->add_option("--algorithm", command->algorithm,
-                  "auto (lifted up to 256 active sites, else octree), octree (paper section 5.2; it turns to\n"
-                  "lifted past 512 boxes per site), lifted (the 3-faces of the lifted regular triangulation in\n"
-                  "R^4), or brute (the O(n^5) reference); all but brute give the same bytes")
+                  "auto (lifted up to 256 active sites or for balls of one radius, else octree), octree (paper\n"
+                  "section 5.2; it turns to lifted past 512 boxes per site), lifted (the 3-faces of the lifted\n"
+                  "regular triangulation in R^4; for one radius, the Delaunay triangulation of the centres), or\n"
+                  "brute (the O(n^5) reference); all but brute give the same bytes")
       ->check(CLI::IsMember([] {
         std::vector<std::string> names(std::begin(kVertexAlgorithms), std::end(kVertexAlgorithms));
         names.push_back("brute");

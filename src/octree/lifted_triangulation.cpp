@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "diagram/cancellable_steps.h"
+#include "octree/equal_weight_lifts.h"
 
 namespace apollonius {
 namespace {
@@ -77,6 +78,7 @@ const std::vector<Site_index>& Lifted_triangulation::neighbours_of(Site_index s)
 
 Lifted_triangulation lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
                                           const Cancellation* cancellation) {
+  if (!subset.empty() && has_one_weight(sites, subset)) return equal_weight_lifted_triangulation(sites, subset, cancellation);
   using FT = Lift_kernel::FT;
   Triangulation triangulation(4);
 

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -43,6 +44,15 @@ struct Lifted_triangulation {
   // neighbours[i]: the sites joined to sites[i] by an edge, ascending; empty for an unplaced site.
   std::vector<std::vector<Site_index>> neighbours;
   std::vector<Site_index> unplaced;  // sites of the subset that are no vertex, ascending
+  // Only for sites of one weight, whose triangulation is Delaunay's (equal_weight_lifts.h), else empty:
+  // across_facets[q] holds, for each facet of the cell quadruples[q] with a finite cell beyond it, that
+  // cell's position in quadruples and its site opposite the facet; kNoCell for a facet on the hull.
+  static constexpr std::uint32_t kNoCell = std::numeric_limits<std::uint32_t>::max();
+  struct Across_facet {
+    std::uint32_t cell = kNoCell;
+    Site_index site = kNoSite;
+  };
+  std::vector<std::array<Across_facet, 4>> across_facets;
 
   std::size_t position_of(Site_index s) const;                       // in sites; s must be one of them
   const std::vector<Site_index>& neighbours_of(Site_index s) const;  // s in sites

@@ -1,9 +1,12 @@
 #include "octree/lifted_vertices.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <new>
 #include <stdexcept>
 #include <type_traits>
 #include <unordered_map>
@@ -14,25 +17,38 @@
 namespace apollonius {
 namespace {
 
-// Sites tested for one vertex, by position in the lifted triangulation's sites; cleared in O(tested).
+// Sites tested for one vertex, by index; cleared in O(tested).
 class Tested_sites {
  public:
   explicit Tested_sites(std::size_t sites) : tested_(sites, false) {}
-  bool first_test(std::size_t position) {
-    if (tested_[position]) return false;
-    tested_[position] = true;
-    touched_.push_back(position);
+  bool first_test(Site_index s) {
+    if (tested_[s]) return false;
+    tested_[s] = true;
+    touched_.push_back(s);
     return true;
   }
   void clear() {
-    for (std::size_t p : touched_) tested_[p] = false;
+    for (Site_index s : touched_) tested_[s] = false;
     touched_.clear();
   }
 
  private:
   std::vector<bool> tested_;
-  std::vector<std::size_t> touched_;
+  std::vector<Site_index> touched_;
 };
+
+// The unplaced sites' part of tie_set_through_edges and tie_set_through_cells: false if one beats v.
+template <class Kernel>
+bool unplaced_tie(const Vertex& v, const std::vector<Site>& sites, const Lifted_triangulation& lifts, Tested_sites& tested,
+                  std::vector<Site_index>& tie) {
+  for (Site_index s : lifts.unplaced) {
+    if (!tested.first_test(s)) continue;
+    const Sign sign = Kernel::conflict(v, sites[s]);
+    if (sign == Sign::NEGATIVE) return false;
+    if (sign == Sign::ZERO) tie.push_back(s);
+  }
+  return true;
+}
 
 // The tie set of v, a root of a 3-face, or false if some site is strictly closer (lifted_vertices.h): its
 // lift lies in the power cell of v's first site iff no neighbour of that site and no unplaced site beats
@@ -43,15 +59,14 @@ bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, cons
   const auto& own = v.sites();
   tie.assign(own.begin(), own.end());
   tested.clear();
-  for (Site_index s : own) tested.first_test(lifts.position_of(s));
+  for (Site_index s : own) tested.first_test(s);
+  if (!unplaced_tie<Kernel>(v, sites, lifts, tested, tie)) return false;
   const auto beats = [&](Site_index s) {
-    if (!tested.first_test(lifts.position_of(s))) return false;
+    if (!tested.first_test(s)) return false;
     const Sign sign = Kernel::conflict(v, sites[s]);
     if (sign == Sign::ZERO) tie.push_back(s);
     return sign == Sign::NEGATIVE;
   };
-  for (Site_index s : lifts.unplaced)
-    if (beats(s)) return false;
   // A site beating v after the first site's neighbours accepted it contradicts the power cell, which the
   // exact predicates cannot; the floating path's rounding can, and rejects v.
   for (std::size_t k = 0; k < tie.size(); ++k)
@@ -65,6 +80,44 @@ bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, cons
   return true;
 }
 
+// The tie set of v, a root of the Delaunay cell quadruples[q] (equal_weight_lifts.h), or false if an
+// unplaced site is closer. The cell's circumsphere is empty, so no placed site is closer to v than its
+// sites are. The placed sites on that sphere are the vertices of the cells that triangulate their convex
+// hull, a facet-connected set: the cells reached from q across facets whose far site ties. Cost: one
+// conflict test per facet of those cells, four for a vertex of four sites, plus the unplaced sites.
+template <class Kernel>
+bool tie_set_through_cells(const Vertex& v, std::size_t q, const std::vector<Site>& sites, const Lifted_triangulation& lifts,
+                           Tested_sites& tested, std::vector<std::uint32_t>& cells, std::vector<Site_index>& tie) {
+  const auto& own = lifts.quadruples[q];
+  tie.assign(own.begin(), own.end());
+  tested.clear();
+  for (Site_index s : own) tested.first_test(s);
+  if (!unplaced_tie<Kernel>(v, sites, lifts, tested, tie)) return false;
+  cells.assign(1, static_cast<std::uint32_t>(q));
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    for (const Lifted_triangulation::Across_facet& across : lifts.across_facets[cells[k]]) {
+      if (across.cell == Lifted_triangulation::kNoCell || std::find(cells.begin(), cells.end(), across.cell) != cells.end())
+        continue;
+      // The cell beyond lies on the sphere iff its far site ties (its other three are the facet's).
+      bool ties;
+      if (tested.first_test(across.site)) {
+        const Sign sign = Kernel::conflict(v, sites[across.site]);
+        if (sign == Sign::NEGATIVE) {  // the sphere is empty: only the floating path's rounding says otherwise
+          if (std::is_same_v<Kernel, Certified_kernel>)
+            throw std::logic_error("lifted vertices: a site lies inside a Delaunay cell's circumsphere");
+          return false;
+        }
+        ties = sign == Sign::ZERO;
+        if (ties) tie.push_back(across.site);
+      } else {
+        ties = std::find(tie.begin(), tie.end(), across.site) != tie.end();
+      }
+      if (ties) cells.push_back(across.cell);
+    }
+  std::sort(tie.begin(), tie.end());
+  return true;
+}
+
 }  // namespace
 
 template <class Kernel>
@@ -72,16 +125,30 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
                                           const std::function<bool(const Vertex&)>& wanted,
                                           const Cancellation* cancellation) {
   const std::vector<std::array<Site_index, 4>>& quadruples = lifts.quadruples;
-  std::vector<std::vector<Found_vertex>> found(quadruples.size());
+  // Each thread's list, with room for a vertex per quadruple (one per Delaunay cell, equal_weight_lifts.h):
+  // never moved as it grows, and one of them then takes the others. Room never filled is address space,
+  // not memory. Lists per chunk of quadruples held the vertices twice while they were concatenated.
+  tbb::enumerable_thread_specific<std::vector<Found_vertex>> found([&] {
+    std::vector<Found_vertex> list;
+    try {
+      list.reserve(quadruples.size());
+    } catch (const std::bad_alloc&) {
+      // Address space refused (a limit, or strict overcommit): the list grows as it goes.
+    }
+    return list;
+  });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size()), [&](const tbb::blocked_range<std::size_t>& range) {
-    Tested_sites tested(lifts.sites.size());
+    std::vector<Found_vertex>& list = found.local();
+    Tested_sites tested(sites.size());
     std::vector<Site_index> tie;
+    std::vector<std::uint32_t> cells;
     // The vertices of more than four tied sites found in this range, and for each site the ones it ties
     // at: a quadruple's first site names every such vertex that can be its root.
     std::vector<Found_vertex> degenerate;
     std::unordered_map<Site_index, std::vector<std::size_t>> degenerate_at;
     for (std::size_t q = range.begin(); q != range.end(); ++q) {
       throw_if_cancelled(cancellation);
+      const std::size_t first = list.size();
       const std::array<Site_index, 4>& quadruple = quadruples[q];
       const Quadruple_vertices roots = Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites));
       unsigned skipped = 0;
@@ -99,31 +166,59 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
       };
       for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
         const Vertex& v = roots.vertices[r];
-        if (skipped >> r & 1 || !wanted(v) || beaten_by_apex(v) ||
-            !tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie))
+        if (skipped >> r & 1 || !wanted(v) || beaten_by_apex(v)) continue;
+        if (lifts.across_facets.empty() ? !tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie)
+                                        : !tie_set_through_cells<Kernel>(v, q, sites, lifts, tested, cells, tie))
           continue;
         if (tie.size() > 4) {
           for (Site_index s : tie) degenerate_at[s].push_back(degenerate.size());
           degenerate.push_back({tie, v});
         }
-        append_unique<Kernel>(found[q], 0, {tie, v});
+        append_unique<Kernel>(list, first, {tie, v});
       }
     }
   });
-  // A vertex of five or more tied sites is found once in each range that meets it: kept once.
+  // A vertex of five or more tied sites is found once in each range that meets it: kept once, from its
+  // first quadruple (always found: it is the first of its range), whatever the threads. Four sites tie at
+  // the roots of their own quadruple only, which append_unique kept apart. Only those positions are sorted:
+  // the vertices themselves are large, and the assembly sorts them in place.
+  std::vector<std::vector<Found_vertex>> lists;
+  std::size_t total = 0;
+  for (std::vector<Found_vertex>& list : found) {
+    total += list.size();
+    lists.push_back(std::move(list));
+  }
   std::vector<Found_vertex> vertices;
-  move_concatenated(found, vertices, cancellation);
-  cancellable_stable_sort(vertices.begin(), vertices.end(), cancellation,
-                          [](const Found_vertex& x, const Found_vertex& y) { return x.tie_set < y.tie_set; });
-  std::vector<Found_vertex> unique;
-  for (std::size_t i = 0; i < vertices.size();) {
+  const auto roomy = std::find_if(lists.begin(), lists.end(), [&](const auto& list) { return list.capacity() >= total; });
+  if (roomy != lists.end()) vertices = std::move(*roomy);
+  move_concatenated(lists, vertices, cancellation);
+  std::vector<std::size_t> degenerate;
+  for (std::size_t k = 0; k < vertices.size(); ++k)
+    if (vertices[k].tie_set.size() > 4) degenerate.push_back(k);
+  const auto first_quadruple = [&](std::size_t x, std::size_t y) {
+    if (vertices[x].tie_set != vertices[y].tie_set) return vertices[x].tie_set < vertices[y].tie_set;
+    return vertices[x].vertex.quadruple().indices < vertices[y].vertex.quadruple().indices;
+  };
+  cancellable_sort(degenerate.begin(), degenerate.end(), cancellation, first_quadruple);
+  std::vector<bool> repeated(vertices.size(), false);
+  for (std::size_t i = 0; i < degenerate.size();) {
+    throw_if_cancelled(cancellation);
     std::size_t end = i;
-    while (end < vertices.size() && vertices[end].tie_set == vertices[i].tie_set) ++end;
-    const std::size_t group = unique.size();
-    for (std::size_t k = i; k < end; ++k) append_unique<Kernel>(unique, group, std::move(vertices[k]));
+    while (end < degenerate.size() && vertices[degenerate[end]].tie_set == vertices[degenerate[i]].tie_set) ++end;
+    for (std::size_t k = i + 1; k < end; ++k)
+      for (std::size_t j = i; j < k && !repeated[degenerate[k]]; ++j)
+        repeated[degenerate[k]] = !repeated[degenerate[j]] &&
+                                  Kernel::compare(vertices[degenerate[j]].vertex, vertices[degenerate[k]].vertex) == Sign::ZERO;
     i = end;
   }
-  return unique;
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < vertices.size(); ++k)
+    if (!repeated[k]) {
+      if (kept != k) vertices[kept] = std::move(vertices[k]);
+      ++kept;
+    }
+  vertices.erase(vertices.begin() + static_cast<std::ptrdiff_t>(kept), vertices.end());
+  return vertices;
 }
 
 template std::vector<Found_vertex> lifted_vertices<Certified_kernel>(const std::vector<Site>&, const Lifted_triangulation&,

@@ -7,6 +7,11 @@
 // sites that tie and those reached over edges between tied sites (the tied lifts span a cell of the
 // regular subdivision, which the triangulation refines: its edges connect them).
 //
+// For sites of one weight the triangulation is Delaunay's (equal_weight_lifts.h), and the edges give way to
+// the cells: a cell's circumsphere is empty, so its root is a vertex, and the sites tied there are those
+// of the cells across facets that lie on the same sphere (tie_set_through_cells): four conflict tests for
+// a vertex of four sites, where the edges of its four sites took about 34.
+//
 // A root is first tested against the apexes of the 3-face's two full cells: the power cells of its sites
 // meet along its line of roots only between those cells' power centres, so a root outside that edge of
 // the power diagram is beaten by an apex. Only a certified NEGATIVE rejects, so this changes no answer;
@@ -33,7 +38,8 @@
 namespace apollonius {
 
 // Every vertex of `lifts`' sites (none hidden) for which `wanted` holds, each once, with its tie set among
-// them; by ascending tie set. `wanted` is called from several threads. Kernel: kernels.h. Checks
+// them; in no particular order. A vertex of more than four tied sites, a root of several quadruples,
+// comes from the least of them, whatever the thread count. `wanted` is called from several threads. Kernel: kernels.h. Checks
 // cancellation (cancellation.h) at each quadruple.
 template <class Kernel>
 std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const Lifted_triangulation& lifts,

@@ -18,6 +18,7 @@
 #include "octree/candidate_propagation.h"
 #include "octree/far_field.h"
 #include "octree/lifted_triangulation.h"
+#include "octree/equal_weight_lifts.h"
 #include "octree/lifted_vertices.h"
 #include "predicates/kernels.h"
 #include "predicates/rounding_guard.h"
@@ -127,11 +128,12 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const std::size_t budget_boxes =
       options.box_budget.value_or(kBoxesPerSiteBeforeLifted * active.size() + kBoxesBeforeLifted);
   // A budget of 0 (step 5 asked for) is its own reason, for --stats.
-  const bool small_input = options.regions == nullptr && options.arithmetic == Arithmetic::certified &&
-                           budget_boxes > 0 && active.size() <= options.lifted_at_most_sites;
-  const std::size_t box_limit = options.regions != nullptr ? std::numeric_limits<std::size_t>::max()
-                                : small_input                ? 0
-                                                             : budget_boxes;
+  const bool may_go_at_once = options.regions == nullptr && options.arithmetic == Arithmetic::certified && budget_boxes > 0;
+  const bool small_input = may_go_at_once && active.size() <= options.lifted_at_most_sites;
+  const bool one_weight = may_go_at_once && !small_input && options.lifted_for_one_weight && has_one_weight(sites, active);
+  const std::size_t box_limit = options.regions != nullptr   ? std::numeric_limits<std::size_t>::max()
+                                : small_input || one_weight ? 0
+                                                            : budget_boxes;
   Box_budget budget(box_limit);
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
@@ -239,6 +241,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.boxes = budget.spent();
     statistics.lifted_fallback = true;
     statistics.lifted_small_input = small_input;
+    statistics.lifted_one_weight = one_weight;
     Lap_timer lifted_timer;
     arena.execute([&] {
       const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);

@@ -55,6 +55,7 @@ struct Octree_statistics {
   // the refinement had reported to the budget when it stopped.
   bool lifted_fallback = false;
   bool lifted_small_input = false;  // it ran because of Octree_options::lifted_at_most_sites, not the budget
+  bool lifted_one_weight = false;   // it ran because of Octree_options::lifted_for_one_weight
   double lifted_seconds = 0;
   std::size_t lifted_quadruples = 0;
 };
@@ -107,6 +108,9 @@ struct Octree_options {
   // Inputs of at most this many active sites go to step 5 at once, when only the vertices are asked for and
   // the arithmetic is certified (the floating path is the octree's, for comparison); 0: never.
   std::size_t lifted_at_most_sites = 256;
+  // Inputs whose active sites all have one weight go to step 5 at once too, at any size, under the same
+  // conditions: their lifted triangulation is the Delaunay triangulation of the centres (equal_weight_lifts.h).
+  bool lifted_for_one_weight = true;
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

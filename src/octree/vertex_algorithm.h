@@ -10,12 +10,18 @@ namespace apollonius {
 
 inline constexpr const char* kVertexAlgorithms[] = {"auto", "octree", "lifted"};
 
-// auto: the defaults (the lifted triangulation at once for small inputs, else the octree and its budget);
-// octree: never straight to step 5, only past the budget; lifted: step 5 at once. False for another name.
+// auto: the defaults (the lifted triangulation at once for small inputs and for sites of one weight, else
+// the octree and its budget); octree: never straight to step 5, only past the budget; lifted: step 5 at
+// once. False for another name.
 inline bool use_vertex_algorithm(const std::string& name, Octree_options& options) {
-  if (name == "octree") options.lifted_at_most_sites = 0;
-  else if (name == "lifted") options.box_budget = 0;
-  else if (name != "auto") return false;
+  if (name == "octree") {
+    options.lifted_at_most_sites = 0;
+    options.lifted_for_one_weight = false;
+  } else if (name == "lifted") {
+    options.box_budget = 0;
+  } else if (name != "auto") {
+    return false;
+  }
   return true;
 }
 

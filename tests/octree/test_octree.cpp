@@ -110,6 +110,7 @@ TEST_CASE("octree equals brute force on every generator family") {
       Input_time_limit octree_limit(time_limit(), input + " (octree)");
       Octree_options octree_only;
       octree_only.lifted_at_most_sites = 0;  // these inputs are small: the default would take step 5 at once
+      octree_only.lifted_for_one_weight = false;
       const Diagram octree = octree_diagram(sites, octree_only);
       const double seconds = octree_limit.stop();
       if (seconds > report_over()) MESSAGE("octree " << seconds << " s: " << input);
@@ -144,6 +145,7 @@ TEST_CASE("octree equals brute force on the small vdrc sets") {
     const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", {}).sites;
     Octree_options octree_only;
     octree_only.lifted_at_most_sites = 0;
+    octree_only.lifted_for_one_weight = false;
     const Diagram octree = octree_diagram(sites, octree_only);
     validate_diagram(octree, sites);
     const Diagram reference = brute_force_diagram(sites);
@@ -158,6 +160,7 @@ TEST_CASE("the output does not depend on the number of threads") {
   const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/pept.balls", {}).sites;
   Octree_options octree_only{1};
   octree_only.lifted_at_most_sites = 0;  // pept has 107 sites
+  octree_only.lifted_for_one_weight = false;
   const Diagram one = octree_diagram(sites, octree_only);
   validate_diagram(one, sites);
   for (int threads : {2, 3, 8}) {
@@ -179,6 +182,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
   Octree_options unlimited{1, &unlimited_statistics};
   unlimited.box_budget = std::numeric_limits<std::size_t>::max();
   unlimited.lifted_at_most_sites = 0;
+  unlimited.lifted_for_one_weight = false;
   const Diagram octree = octree_diagram(sites, unlimited);
   CHECK_FALSE(unlimited_statistics.lifted_fallback);
   REQUIRE(unlimited_statistics.boxes > 4096);
@@ -188,6 +192,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     Octree_options budgeted{threads, &statistics};
     budgeted.box_budget = 2048;
     budgeted.lifted_at_most_sites = 0;
+    budgeted.lifted_for_one_weight = false;
     check_same(octree_diagram(sites, budgeted), octree);
     CHECK(statistics.lifted_fallback);
     CHECK_FALSE(statistics.lifted_small_input);
@@ -215,6 +220,7 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
     const std::vector<Site> sites = generate_sites(Site_family::uniform, n, 5);
     Octree_options octree_only;
     octree_only.lifted_at_most_sites = 0;
+    octree_only.lifted_for_one_weight = false;
     Octree_statistics octree_statistics;
     octree_only.statistics = &octree_statistics;
     const Diagram octree = octree_diagram(sites, octree_only);
@@ -238,5 +244,63 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
     Octree_statistics floating_statistics;
     octree_diagram(sites, Octree_options{1, &floating_statistics, Arithmetic::floating});
     CHECK_FALSE(floating_statistics.lifted_fallback);
+  }
+}
+
+// Sites of one weight (octree_diagram.h, step 5; equal_weight_lifts.h): at any size straight to the
+// Delaunay triangulation of the centres, with the octree's output, for every thread count; ties of many
+// sites (lattice cubes, a sphere of integer points), coplanar centres and repeats included.
+TEST_CASE("sites of one weight go to the Delaunay triangulation at once, at any size") {
+  const auto with_weight = [](std::vector<Site> sites, double w) {
+    for (Site& s : sites) s.w = w;
+    return sites;
+  };
+  std::vector<std::pair<std::string, std::vector<Site>>> inputs = {
+      {"equal-weights 300", generate_sites(Site_family::equal_weights, 300, 2)},
+      {"equal-weights 3000", generate_sites(Site_family::equal_weights, 3000, 3)},
+      {"lattice 2000, w = 1.5", with_weight(generate_sites(Site_family::lattice, 2000, 4), 1.5)},
+      {"lattice-noise 1000, w = 0.7", with_weight(generate_sites(Site_family::lattice_noise, 1000, 5), 0.7)},
+      {"coplanar 400, w = 2", with_weight(generate_sites(Site_family::coplanar, 400, 6), 2)},
+      {"duplicates 400, w = 1", with_weight(generate_sites(Site_family::duplicates, 400, 7), 1)},
+      {"scaled-down 500, w = 2^-300", with_weight(generate_sites(Site_family::scaled_down, 500, 8), std::ldexp(1.0, -300))},
+      {"wide-range 300, w = -3", with_weight(generate_sites(Site_family::wide_range, 300, 9), -3)}};
+  // Every integer point at distance 5 from the origin (30 of them) and a 7^3 cube lattice: one vertex
+  // holds all 30, and every lattice cube's eight corners tie at its centre.
+  std::vector<Site> sphere_and_lattice;
+  for (int x = -5; x <= 5; ++x)
+    for (int y = -5; y <= 5; ++y)
+      for (int z = -5; z <= 5; ++z)
+        if (x * x + y * y + z * z == 25) sphere_and_lattice.push_back({double(x), double(y), double(z), 1});
+  for (int x = 0; x < 7; ++x)
+    for (int y = 0; y < 7; ++y)
+      for (int z = 0; z < 7; ++z) sphere_and_lattice.push_back({20.0 + 2 * x, 2.0 * y, 2.0 * z, 1});
+  inputs.emplace_back("integer sphere of radius 5 and a 7^3 lattice", sphere_and_lattice);
+  for (const auto& [name, sites] : inputs) {
+    CAPTURE(name);
+    Input_time_limit limit(time_limit(), name);
+    Octree_options octree_only;
+    octree_only.lifted_at_most_sites = 0;
+    octree_only.lifted_for_one_weight = false;
+    const Diagram octree = octree_diagram(sites, octree_only);
+    validate_diagram(octree, sites);
+    const std::size_t active = sites.size() - octree.hidden.size();
+    for (int threads : {1, 2}) {
+      CAPTURE(threads);
+      Octree_statistics statistics;
+      const Diagram automatic = octree_diagram(sites, Octree_options{threads, &statistics});
+      check_same(automatic, octree);
+      const bool small = active <= Octree_options{}.lifted_at_most_sites;
+      CHECK(statistics.lifted_fallback == (active >= 4));
+      CHECK(statistics.lifted_one_weight == (active >= 4 && !small));
+      CHECK(statistics.boxes == 0);
+    }
+    limit.stop();
+    if (name.rfind("integer sphere", 0) == 0) {
+      const auto all_thirty = std::find_if(octree.vertices.begin(), octree.vertices.end(),
+                                           [](const Diagram_vertex& v) { return v.tie_set.size() == 30; });
+      CHECK(all_thirty != octree.vertices.end());
+      CHECK(std::count_if(octree.vertices.begin(), octree.vertices.end(),
+                          [](const Diagram_vertex& v) { return v.tie_set.size() == 8; }) >= 6 * 6 * 6);
+    }
   }
 }
