@@ -20,7 +20,8 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vertex_base = CGAL::Triangulation_vertex_base_with_info_3<Site_index, Kernel>;
 // A cell's info: its position in the sorted quadruples.
-using Cell_base = CGAL::Triangulation_cell_base_with_info_3<std::uint32_t, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using Cell_base =
+    CGAL::Triangulation_cell_base_with_info_3<std::uint32_t, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Data_structure = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Data_structure>;
 
@@ -33,7 +34,8 @@ bool has_one_weight(const std::vector<Site>& sites, const std::vector<Site_index
   return std::all_of(subset.begin(), subset.end(), [&](Site_index s) { return sites[s].w == sites[subset.front()].w; });
 }
 
-Lifted_triangulation equal_weight_lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
+Lifted_triangulation equal_weight_lifted_triangulation(const std::vector<Site>& sites,
+                                                       const std::vector<Site_index>& subset,
                                                        const Cancellation* cancellation) {
   Lifted_triangulation result;
   result.sites = subset;
@@ -43,8 +45,9 @@ Lifted_triangulation equal_weight_lifted_triangulation(const std::vector<Site>& 
   // By centre, then index: the first of each centre is placed, the repeats after it are not.
   std::vector<Site_index> order = result.sites;
   const auto centre = [&](Site_index s) { return std::make_tuple(sites[s].x, sites[s].y, sites[s].z); };
-  cancellable_sort(order.begin(), order.end(), cancellation,
-                   [&](Site_index a, Site_index b) { return std::make_pair(centre(a), a) < std::make_pair(centre(b), b); });
+  cancellable_sort(order.begin(), order.end(), cancellation, [&](Site_index a, Site_index b) {
+    return std::make_pair(centre(a), a) < std::make_pair(centre(b), b);
+  });
   std::vector<std::pair<Kernel::Point_3, Site_index>> centres;
   centres.reserve(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) {

@@ -24,7 +24,8 @@ bool has_one_weight(const std::vector<Site>& sites, const std::vector<Site_index
 
 // lifted_triangulation(sites, subset) for a subset of one weight (precondition: has_one_weight). A centre
 // repeated within the subset is placed once, for its smallest index; the others are unplaced.
-Lifted_triangulation equal_weight_lifted_triangulation(const std::vector<Site>& sites, const std::vector<Site_index>& subset,
+Lifted_triangulation equal_weight_lifted_triangulation(const std::vector<Site>& sites,
+                                                       const std::vector<Site_index>& subset,
                                                        const Cancellation* cancellation = nullptr);
 
 }  // namespace apollonius

@@ -39,8 +39,8 @@ class Tested_sites {
 
 // The unplaced sites' part of tie_set_through_edges and tie_set_through_cells: false if one beats v.
 template <class Kernel>
-bool unplaced_tie(const Vertex& v, const std::vector<Site>& sites, const Lifted_triangulation& lifts, Tested_sites& tested,
-                  std::vector<Site_index>& tie) {
+bool unplaced_tie(const Vertex& v, const std::vector<Site>& sites, const Lifted_triangulation& lifts,
+                  Tested_sites& tested, std::vector<Site_index>& tie) {
   for (Site_index s : lifts.unplaced) {
     if (!tested.first_test(s)) continue;
     const Sign sign = Kernel::conflict(v, sites[s]);
@@ -86,8 +86,9 @@ bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, cons
 // hull, a facet-connected set: the cells reached from q across facets whose far site ties. Cost: one
 // conflict test per facet of those cells, four for a vertex of four sites, plus the unplaced sites.
 template <class Kernel>
-bool tie_set_through_cells(const Vertex& v, std::size_t q, const std::vector<Site>& sites, const Lifted_triangulation& lifts,
-                           Tested_sites& tested, std::vector<std::uint32_t>& cells, std::vector<Site_index>& tie) {
+bool tie_set_through_cells(const Vertex& v, std::size_t q, const std::vector<Site>& sites,
+                           const Lifted_triangulation& lifts, Tested_sites& tested, std::vector<std::uint32_t>& cells,
+                           std::vector<Site_index>& tie) {
   const auto& own = lifts.quadruples[q];
   tie.assign(own.begin(), own.end());
   tested.clear();
@@ -96,7 +97,8 @@ bool tie_set_through_cells(const Vertex& v, std::size_t q, const std::vector<Sit
   cells.assign(1, static_cast<std::uint32_t>(q));
   for (std::size_t k = 0; k < cells.size(); ++k)
     for (const Lifted_triangulation::Across_facet& across : lifts.across_facets[cells[k]]) {
-      if (across.cell == Lifted_triangulation::kNoCell || std::find(cells.begin(), cells.end(), across.cell) != cells.end())
+      if (across.cell == Lifted_triangulation::kNoCell ||
+          std::find(cells.begin(), cells.end(), across.cell) != cells.end())
         continue;
       // The cell beyond lies on the sphere iff its far site ties (its other three are the facet's).
       bool ties;
@@ -189,7 +191,8 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
     lists.push_back(std::move(list));
   }
   std::vector<Found_vertex> vertices;
-  const auto roomy = std::find_if(lists.begin(), lists.end(), [&](const auto& list) { return list.capacity() >= total; });
+  const auto roomy =
+      std::find_if(lists.begin(), lists.end(), [&](const auto& list) { return list.capacity() >= total; });
   if (roomy != lists.end()) vertices = std::move(*roomy);
   move_concatenated(lists, vertices, cancellation);
   std::vector<std::size_t> degenerate;
@@ -207,8 +210,9 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
     while (end < degenerate.size() && vertices[degenerate[end]].tie_set == vertices[degenerate[i]].tie_set) ++end;
     for (std::size_t k = i + 1; k < end; ++k)
       for (std::size_t j = i; j < k && !repeated[degenerate[k]]; ++j)
-        repeated[degenerate[k]] = !repeated[degenerate[j]] &&
-                                  Kernel::compare(vertices[degenerate[j]].vertex, vertices[degenerate[k]].vertex) == Sign::ZERO;
+        repeated[degenerate[k]] =
+            !repeated[degenerate[j]] &&
+            Kernel::compare(vertices[degenerate[j]].vertex, vertices[degenerate[k]].vertex) == Sign::ZERO;
     i = end;
   }
   std::size_t kept = 0;

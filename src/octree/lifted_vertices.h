@@ -39,8 +39,8 @@ namespace apollonius {
 
 // Every vertex of `lifts`' sites (none hidden) for which `wanted` holds, each once, with its tie set among
 // them; in no particular order. A vertex of more than four tied sites, a root of several quadruples,
-// comes from the least of them, whatever the thread count. `wanted` is called from several threads. Kernel: kernels.h. Checks
-// cancellation (cancellation.h) at each quadruple.
+// comes from the least of them, whatever the thread count. `wanted` is called from several threads.
+// Kernel: kernels.h. Checks cancellation (cancellation.h) at each quadruple.
 template <class Kernel>
 std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const Lifted_triangulation& lifts,
                                           const std::function<bool(const Vertex&)>& wanted,

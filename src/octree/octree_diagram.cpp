@@ -128,9 +128,11 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const std::size_t budget_boxes =
       options.box_budget.value_or(kBoxesPerSiteBeforeLifted * active.size() + kBoxesBeforeLifted);
   // A budget of 0 (step 5 asked for) is its own reason, for --stats.
-  const bool may_go_at_once = options.regions == nullptr && options.arithmetic == Arithmetic::certified && budget_boxes > 0;
+  const bool may_go_at_once =
+      options.regions == nullptr && options.arithmetic == Arithmetic::certified && budget_boxes > 0;
   const bool small_input = may_go_at_once && active.size() <= options.lifted_at_most_sites;
-  const bool one_weight = may_go_at_once && !small_input && options.lifted_for_one_weight && has_one_weight(sites, active);
+  const bool one_weight =
+      may_go_at_once && !small_input && options.lifted_for_one_weight && has_one_weight(sites, active);
   const std::size_t box_limit = options.regions != nullptr   ? std::numeric_limits<std::size_t>::max()
                                 : small_input || one_weight ? 0
                                                             : budget_boxes;

@@ -262,7 +262,8 @@ TEST_CASE("sites of one weight go to the Delaunay triangulation at once, at any 
       {"lattice-noise 1000, w = 0.7", with_weight(generate_sites(Site_family::lattice_noise, 1000, 5), 0.7)},
       {"coplanar 400, w = 2", with_weight(generate_sites(Site_family::coplanar, 400, 6), 2)},
       {"duplicates 400, w = 1", with_weight(generate_sites(Site_family::duplicates, 400, 7), 1)},
-      {"scaled-down 500, w = 2^-300", with_weight(generate_sites(Site_family::scaled_down, 500, 8), std::ldexp(1.0, -300))},
+      {"scaled-down 500, w = 2^-300",
+       with_weight(generate_sites(Site_family::scaled_down, 500, 8), std::ldexp(1.0, -300))},
       {"wide-range 300, w = -3", with_weight(generate_sites(Site_family::wide_range, 300, 9), -3)}};
   // Every integer point at distance 5 from the origin (30 of them) and a 7^3 cube lattice: one vertex
   // holds all 30, and every lattice cube's eight corners tie at its centre.
