@@ -105,7 +105,9 @@ Lifted_triangulation equal_weight_lifted_triangulation(const std::vector<Site>& 
     for (int i = 0; i < 4; ++i) {
       const Delaunay::Cell_handle beyond = cell->neighbor(i);
       if (triangulation.is_infinite(beyond)) continue;
-      result.across_facets[q][i] = {beyond->info(), beyond->vertex(beyond->index(cell))->info()};
+      const Delaunay::Vertex_handle far = beyond->vertex(beyond->index(cell));
+      const bool same_sphere = triangulation.side_of_sphere(cell, far->point()) == CGAL::ON_BOUNDARY;
+      result.across_facets[q][i] = {beyond->info(), far->info(), same_sphere};
     }
   }
   return result;

@@ -9,6 +9,7 @@
 // symbolic perturbation as the regular triangulation in R^4 does: any triangulation refining the Delaunay
 // subdivision serves (lifted_triangulation.h). Its predicates, orientation and in-sphere, are exact
 // (Epick: static and interval filters, then exact arithmetic), for centres anywhere in the double range.
+// The in-sphere test (without perturbation) also says which cells across facets share a circumsphere.
 // Cost: O(n log n) expected for n centres in general position, about a hundredth of the same triangulation
 // in R^4 (docs/benchmarks.md, "Equal weights").
 #pragma once

@@ -46,11 +46,14 @@ struct Lifted_triangulation {
   std::vector<Site_index> unplaced;  // sites of the subset that are no vertex, ascending
   // Only for sites of one weight, whose triangulation is Delaunay's (equal_weight_lifts.h), else empty:
   // across_facets[q] holds, for each facet of the cell quadruples[q] with a finite cell beyond it, that
-  // cell's position in quadruples and its site opposite the facet; kNoCell for a facet on the hull.
+  // cell's position in quadruples, its site opposite the facet, and whether that site lies on the
+  // circumsphere of quadruples[q] (exactly: then both cells have one circumsphere); kNoCell for a facet on
+  // the hull.
   static constexpr std::uint32_t kNoCell = std::numeric_limits<std::uint32_t>::max();
   struct Across_facet {
     std::uint32_t cell = kNoCell;
     Site_index site = kNoSite;
+    bool same_sphere = false;
   };
   std::vector<std::array<Across_facet, 4>> across_facets;
 

@@ -80,41 +80,29 @@ bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, cons
   return true;
 }
 
-// The tie set of v, a root of the Delaunay cell quadruples[q] (equal_weight_lifts.h), or false if an
+// The tie set of v, the root of the Delaunay cell quadruples[q] (equal_weight_lifts.h), or false if an
 // unplaced site is closer. The cell's circumsphere is empty, so no placed site is closer to v than its
-// sites are. The placed sites on that sphere are the vertices of the cells that triangulate their convex
-// hull, a facet-connected set: the cells reached from q across facets whose far site ties. Cost: one
-// conflict test per facet of those cells, four for a vertex of four sites, plus the unplaced sites.
+// sites are. The placed sites on that sphere are the vertices of the cells that share it, which triangulate
+// their convex hull and so are connected through facets: the cells reached across facets marked
+// same_sphere. Each is marked covered, since its root is v. No conflict test but the unplaced sites';
+// O(cells on the sphere).
 template <class Kernel>
 bool tie_set_through_cells(const Vertex& v, std::size_t q, const std::vector<Site>& sites,
-                           const Lifted_triangulation& lifts, Tested_sites& tested, std::vector<std::uint32_t>& cells,
-                           std::vector<Site_index>& tie) {
+                           const Lifted_triangulation& lifts, Tested_sites& tested, std::vector<bool>& covered,
+                           std::vector<std::uint32_t>& cells, std::vector<Site_index>& tie) {
   const auto& own = lifts.quadruples[q];
   tie.assign(own.begin(), own.end());
   tested.clear();
   for (Site_index s : own) tested.first_test(s);
   if (!unplaced_tie<Kernel>(v, sites, lifts, tested, tie)) return false;
   cells.assign(1, static_cast<std::uint32_t>(q));
+  covered[q] = true;
   for (std::size_t k = 0; k < cells.size(); ++k)
     for (const Lifted_triangulation::Across_facet& across : lifts.across_facets[cells[k]]) {
-      if (across.cell == Lifted_triangulation::kNoCell ||
-          std::find(cells.begin(), cells.end(), across.cell) != cells.end())
-        continue;
-      // The cell beyond lies on the sphere iff its far site ties (its other three are the facet's).
-      bool ties;
-      if (tested.first_test(across.site)) {
-        const Sign sign = Kernel::conflict(v, sites[across.site]);
-        if (sign == Sign::NEGATIVE) {  // the sphere is empty: only the floating path's rounding says otherwise
-          if (std::is_same_v<Kernel, Certified_kernel>)
-            throw std::logic_error("lifted vertices: a site lies inside a Delaunay cell's circumsphere");
-          return false;
-        }
-        ties = sign == Sign::ZERO;
-        if (ties) tie.push_back(across.site);
-      } else {
-        ties = std::find(tie.begin(), tie.end(), across.site) != tie.end();
-      }
-      if (ties) cells.push_back(across.cell);
+      if (!across.same_sphere || covered[across.cell]) continue;
+      covered[across.cell] = true;
+      cells.push_back(across.cell);
+      if (tested.first_test(across.site)) tie.push_back(across.site);
     }
   std::sort(tie.begin(), tie.end());
   return true;
@@ -143,6 +131,9 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
     std::vector<Found_vertex>& list = found.local();
     Tested_sites tested(sites.size());
     std::vector<Site_index> tie;
+    // Delaunay's cells whose root this range has decided, as one of a sphere's (tie_set_through_cells).
+    const bool delaunay = !lifts.across_facets.empty();
+    std::vector<bool> covered(delaunay ? quadruples.size() : 0, false);
     std::vector<std::uint32_t> cells;
     // The vertices of more than four tied sites found in this range, and for each site the ones it ties
     // at: a quadruple's first site names every such vertex that can be its root.
@@ -150,6 +141,7 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
     std::unordered_map<Site_index, std::vector<std::size_t>> degenerate_at;
     for (std::size_t q = range.begin(); q != range.end(); ++q) {
       throw_if_cancelled(cancellation);
+      if (delaunay && covered[q]) continue;
       const std::size_t first = list.size();
       const std::array<Site_index, 4>& quadruple = quadruples[q];
       const Quadruple_vertices roots = Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites));
@@ -169,10 +161,10 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
       for (std::size_t r = 0; r < roots.vertices.size(); ++r) {
         const Vertex& v = roots.vertices[r];
         if (skipped >> r & 1 || !wanted(v) || beaten_by_apex(v)) continue;
-        if (lifts.across_facets.empty() ? !tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie)
-                                        : !tie_set_through_cells<Kernel>(v, q, sites, lifts, tested, cells, tie))
+        if (delaunay ? !tie_set_through_cells<Kernel>(v, q, sites, lifts, tested, covered, cells, tie)
+                     : !tie_set_through_edges<Kernel>(v, sites, lifts, tested, tie))
           continue;
-        if (tie.size() > 4) {
+        if (tie.size() > 4 && !delaunay) {
           for (Site_index s : tie) degenerate_at[s].push_back(degenerate.size());
           degenerate.push_back({tie, v});
         }

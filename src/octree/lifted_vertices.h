@@ -9,8 +9,9 @@
 //
 // For sites of one weight the triangulation is Delaunay's (equal_weight_lifts.h), and the edges give way to
 // the cells: a cell's circumsphere is empty, so its root is a vertex, and the sites tied there are those
-// of the cells across facets that lie on the same sphere (tie_set_through_cells): four conflict tests for
-// a vertex of four sites, where the edges of its four sites took about 34.
+// of the cells across facets on the same sphere, which the triangulation marks (tie_set_through_cells):
+// no conflict test, where the edges of a vertex's four sites took about 34, and a sphere's cells are
+// decided once per range.
 //
 // A root is first tested against the apexes of the 3-face's two full cells: the power cells of its sites
 // meet along its line of roots only between those cells' power centres, so a root outside that edge of
