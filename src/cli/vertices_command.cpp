@@ -46,7 +46,8 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
   // The lifted fallback (octree_diagram.h, step 5), only when it ran.
   if (s.lifted_fallback)
-    err << "lifted fallback\nlifted_reason " << (s.lifted_small_input ? "small_input" : s.lifted_one_weight ? "one_weight" : "box_budget")
+    err << "lifted fallback\nlifted_reason "
+        << (s.lifted_small_input ? "small_input" : s.lifted_one_weight ? "one_weight" : "box_budget")
         << "\nlifted_seconds " << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
 }
 

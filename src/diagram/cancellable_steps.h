@@ -97,4 +97,18 @@ void move_concatenated(std::vector<std::vector<T>>& lists, std::vector<T>& out, 
   }
 }
 
+// The lists as one: the others moved onto the end of one with room for all, whose elements stay where they
+// are (each thread's list, reserved in advance, never moves); else all of them moved into a new one.
+template <class T>
+std::vector<T> gathered(std::vector<std::vector<T>>& lists, const Cancellation* cancellation) {
+  std::size_t total = 0;
+  for (const std::vector<T>& list : lists) total += list.size();
+  std::vector<T> all;
+  const auto roomy =
+      std::find_if(lists.begin(), lists.end(), [&](const std::vector<T>& list) { return list.capacity() >= total; });
+  if (roomy != lists.end()) all = std::move(*roomy);  // leaves *roomy empty
+  move_concatenated(lists, all, cancellation);
+  return all;
+}
+
 }  // namespace apollonius

@@ -37,18 +37,6 @@ void permute_in_place(std::vector<Diagram_vertex>& vertices, std::vector<std::si
   }
 }
 
-// The lists as one: the others moved onto the end of one with room for all, whose vertices stay where they
-// are; else (no list has room) all of them moved into a new one.
-std::vector<Diagram_vertex> gathered(std::vector<std::vector<Diagram_vertex>>& lists, const Cancellation* cancellation) {
-  std::size_t total = 0;
-  for (const auto& list : lists) total += list.size();
-  std::vector<Diagram_vertex> all;
-  const auto roomy = std::find_if(lists.begin(), lists.end(), [&](const auto& list) { return list.capacity() >= total; });
-  if (roomy != lists.end()) all = std::move(*roomy);  // leaves *roomy empty
-  move_concatenated(lists, all, cancellation);
-  return all;
-}
-
 }  // namespace
 
 template <class Kernel>

@@ -10,8 +10,8 @@
 // subdivision serves (lifted_triangulation.h). Its predicates, orientation and in-sphere, are exact
 // (Epick: static and interval filters, then exact arithmetic), for centres anywhere in the double range.
 // The in-sphere test (without perturbation) also says which cells across facets share a circumsphere.
-// Cost: O(n log n) expected for n centres in general position, about a hundredth of the same triangulation
-// in R^4 (docs/benchmarks.md, "Equal weights").
+// Cost: O(n log n) expected for n centres in general position, and four in-sphere tests per cell
+// (docs/benchmarks.md, "Balls of one radius").
 #pragma once
 
 #include <vector>

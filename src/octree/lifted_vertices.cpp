@@ -37,17 +37,22 @@ class Tested_sites {
   std::vector<Site_index> touched_;
 };
 
+// Whether site s, if not tested yet for v, is strictly closer to v; a tie goes into `tie`.
+template <class Kernel>
+bool beats(const Vertex& v, Site_index s, const std::vector<Site>& sites, Tested_sites& tested,
+           std::vector<Site_index>& tie) {
+  if (!tested.first_test(s)) return false;
+  const Sign sign = Kernel::conflict(v, sites[s]);
+  if (sign == Sign::ZERO) tie.push_back(s);
+  return sign == Sign::NEGATIVE;
+}
+
 // The unplaced sites' part of tie_set_through_edges and tie_set_through_cells: false if one beats v.
 template <class Kernel>
 bool unplaced_tie(const Vertex& v, const std::vector<Site>& sites, const Lifted_triangulation& lifts,
                   Tested_sites& tested, std::vector<Site_index>& tie) {
-  for (Site_index s : lifts.unplaced) {
-    if (!tested.first_test(s)) continue;
-    const Sign sign = Kernel::conflict(v, sites[s]);
-    if (sign == Sign::NEGATIVE) return false;
-    if (sign == Sign::ZERO) tie.push_back(s);
-  }
-  return true;
+  return std::none_of(lifts.unplaced.begin(), lifts.unplaced.end(),
+                      [&](Site_index s) { return beats<Kernel>(v, s, sites, tested, tie); });
 }
 
 // The tie set of v, a root of a 3-face, or false if some site is strictly closer (lifted_vertices.h): its
@@ -61,17 +66,11 @@ bool tie_set_through_edges(const Vertex& v, const std::vector<Site>& sites, cons
   tested.clear();
   for (Site_index s : own) tested.first_test(s);
   if (!unplaced_tie<Kernel>(v, sites, lifts, tested, tie)) return false;
-  const auto beats = [&](Site_index s) {
-    if (!tested.first_test(s)) return false;
-    const Sign sign = Kernel::conflict(v, sites[s]);
-    if (sign == Sign::ZERO) tie.push_back(s);
-    return sign == Sign::NEGATIVE;
-  };
   // A site beating v after the first site's neighbours accepted it contradicts the power cell, which the
   // exact predicates cannot; the floating path's rounding can, and rejects v.
   for (std::size_t k = 0; k < tie.size(); ++k)
     for (Site_index s : lifts.neighbours_of(tie[k]))
-      if (beats(s)) {
+      if (beats<Kernel>(v, s, sites, tested, tie)) {
         if (k != 0 && std::is_same_v<Kernel, Certified_kernel>)
           throw std::logic_error("lifted vertices: a site beats a vertex that its first site's neighbours accept");
         return false;
@@ -177,16 +176,8 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
   // the roots of their own quadruple only, which append_unique kept apart. Only those positions are sorted:
   // the vertices themselves are large, and the assembly sorts them in place.
   std::vector<std::vector<Found_vertex>> lists;
-  std::size_t total = 0;
-  for (std::vector<Found_vertex>& list : found) {
-    total += list.size();
-    lists.push_back(std::move(list));
-  }
-  std::vector<Found_vertex> vertices;
-  const auto roomy =
-      std::find_if(lists.begin(), lists.end(), [&](const auto& list) { return list.capacity() >= total; });
-  if (roomy != lists.end()) vertices = std::move(*roomy);
-  move_concatenated(lists, vertices, cancellation);
+  for (std::vector<Found_vertex>& list : found) lists.push_back(std::move(list));
+  std::vector<Found_vertex> vertices = gathered(lists, cancellation);
   std::vector<std::size_t> degenerate;
   for (std::size_t k = 0; k < vertices.size(); ++k)
     if (vertices[k].tie_set.size() > 4) degenerate.push_back(k);
