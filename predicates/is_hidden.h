@@ -5,6 +5,7 @@
 
 #include "predicates/filtered_predicate.h"
 #include "predicates/site.h"
+#include "predicates/wide_interval.h"
 
 namespace apollonius {
 
@@ -18,6 +19,15 @@ struct Is_hidden_predicate {
     if (certain_sign(gap) == Sign::NEGATIVE) return false;
     const NT dx = NT(i.x) - NT(j.x), dy = NT(i.y) - NT(j.y), dz = NT(i.z) - NT(j.z);
     return certain_sign(dx * dx + dy * dy + dz * dz - gap * gap) != Sign::POSITIVE;
+  }
+
+  // For sites whose squared distance leaves the double range (1e-260 beside 1e265).
+  static std::optional<bool> wide_stage(const Site& i, Site_index index_i, const Site& j, Site_index index_j) {
+    try {
+      return evaluate<Wide_interval>(i, index_i, j, index_j);
+    } catch (const Uncertain_sign&) {
+      return std::nullopt;
+    }
   }
 };
 

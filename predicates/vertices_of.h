@@ -75,10 +75,59 @@ struct Vertices_of_predicate {
     }
     if (!may_leave_double_range(q)) return std::nullopt;
     try {
-      return vertices_on_line_if_certain(quadruple_line<Wide_interval>(q.sites), q);
+      if (std::optional<Quadruple_vertices> certain = vertices_on_line_if_certain(quadruple_line<Wide_interval>(q.sites), q))
+        return certain;
+    } catch (const Uncertain_sign&) {
+    }
+    const int origin = closest_pair_origin(q);
+    if (origin == 0) return std::nullopt;
+    try {
+      return wide_vertices_from_origin(q, origin);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
+  }
+
+  // The first site of the quadruple's closest pair (max norm over x, y, z, w). Two sites a hair apart
+  // beside far ones (a cluster 1e-9 wide beside balls of radius 1) give M two rows equal to within the
+  // hair when the origin is a far site, and rows of their own sizes when it is one of the two.
+  static int closest_pair_origin(const Quadruple& q) {
+    const auto distance = [&](int i, int j) {
+      const Site &s = q.sites[i], &t = q.sites[j];
+      return std::max({std::fabs(s.x - t.x), std::fabs(s.y - t.y), std::fabs(s.z - t.z), std::fabs(s.w - t.w)});
+    };
+    int origin = 0;
+    double closest = INFINITY;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (distance(i, j) < closest) closest = distance(i, j), origin = i;
+    return origin;
+  }
+
+  // The wide stage with site m of the quadruple as the origin of the line, its vertices moved back to
+  // site 0: X = X_m + 2 (p_m - p_0, w_0 - w_m). M's rows relative to site m span the same space, so n
+  // changes by a nonzero factor c: the pivot (the first k with n_k != 0) stays, A = <n, n> changes by
+  // c^2 > 0, and X_k = lambda moves by a constant, so each root keeps its label (MINUS, PLUS, SINGLE).
+  static std::optional<Quadruple_vertices> wide_vertices_from_origin(const Quadruple& q, int m) {
+    std::array<Site, 4> sites = q.sites;
+    std::swap(sites[0], sites[m]);
+    const Quadruple_line<Wide_interval> line = quadruple_line<Wide_interval>(sites);
+    Quadruple_vertices result;
+    if (line.pivot < 0) {
+      result.rank_deficient = true;
+      return result;
+    }
+    const std::optional<Line_roots<Wide_interval>> roots = line_roots(line);
+    if (!roots) return std::nullopt;
+    result.equidistant_curve = roots->whole_line_on_cone;
+    const Relative_site<Wide_interval> shift = relative_site<Wide_interval>(q.sites[0], q.sites[m]);
+    for (const Line_root<Wide_interval>& root : roots->roots) {
+      Vertex_coordinates<Wide_interval> X = coordinates_on_line(line, root.lambda);
+      for (int j = 0; j < 3; ++j) X.scaled[j] = X.scaled[j] + Wide_interval(2) * shift.row[j];
+      X.scaled[3] = X.scaled[3] - Wide_interval(2) * shift.row[3];
+      if (is_valid_root(X, q)) result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
+    }
+    return result;
   }
 
   // Whether a relative coordinate (a_m, b_m: quadruple_line.h) lies beyond 2^64, or every one below

@@ -19,6 +19,9 @@ class Wide_interval {
   Wide_interval(int x) : Wide_interval(static_cast<double>(x)) {}  // NOLINT: as Interval converts
   Wide_interval(double x) : mantissa_(x), exponent_(0) { normalize(); }  // NOLINT; x finite
 
+  // mantissa 2^exponent. Throws Uncertain_sign if the mantissa is not finite.
+  static Wide_interval with_exponent(const Interval& mantissa, long exponent) { return {mantissa, exponent}; }
+
   const Interval& mantissa() const { return mantissa_; }
   long exponent() const { return exponent_; }
 

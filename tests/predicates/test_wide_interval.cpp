@@ -8,7 +8,9 @@
 #include <limits>
 #include <random>
 
+#include "predicates/is_hidden.h"
 #include "predicates/rounding_guard.h"
+#include "predicates/vertex_conflict.h"
 #include "predicates/vertices_of.h"
 #include "predicates/wide_interval.h"
 
@@ -37,6 +39,47 @@ struct Both {
   Wide_interval wide;
   Exact exact;
 };
+
+// Sites in clusters of their own scales, as in `generate wide-range`: a site at 2^e, and sites a hair from
+// it (2^(e - h), h up to 900) or at scales of their own. Weights stay below the spread, so that most
+// quadruples have vertices.
+std::vector<Site> clustered_sites(std::mt19937_64& random, int count) {
+  std::uniform_int_distribution<int> exponent(-700, 700), hair(20, 900), small(-4, 4), choice(0, 2);
+  std::vector<Site> sites;
+  const auto at_scale = [&](double scale) {
+    return Site{scale * small(random), scale * small(random), scale * small(random), scale * std::abs(small(random)) / 8};
+  };
+  while (static_cast<int>(sites.size()) < count) {
+    if (sites.empty() || choice(random) == 0) {
+      sites.push_back(at_scale(std::ldexp(1.0, exponent(random))));
+      continue;
+    }
+    const Site& near = sites[std::uniform_int_distribution<std::size_t>(0, sites.size() - 1)(random)];
+    const double scale = std::max({std::fabs(near.x), std::fabs(near.y), std::fabs(near.z), std::fabs(near.w), 0x1p-700});
+    const Site offset = at_scale(std::ldexp(scale, -hair(random)));
+    sites.push_back({near.x + offset.x, near.y + offset.y, near.z + offset.z, near.w + offset.w});
+  }
+  return sites;
+}
+
+// Whether each exact X_j lies in the vertex's plain box, and in its scaled box where there is one.
+bool boxes_hold(const Vertex& filtered, const Vertex& exact) {
+  const Vertex_coordinates<Exact>& X = exact.coordinates<Exact>();
+  for (int j = 0; j < 4; ++j) {
+    const Root_number<Exact> x{X.scaled[j].a, X.scaled[j].b, X.discriminant, X.denominator};
+    const auto within = [&](const Interval& box, long k) {
+      const auto bound = [&](double b) {
+        return Root_number<Exact>{times_power_of_two(Exact(b), static_cast<int>(k)), Exact(0), Exact(0), Exact(1)};
+      };
+      return (std::isinf(box.inf()) || compare(x, bound(box.inf())) != Sign::NEGATIVE) &&
+             (std::isinf(box.sup()) || compare(x, bound(box.sup())) != Sign::POSITIVE);
+    };
+    if (!within(filtered.coordinates<Interval>().scaled[j], 0)) return false;
+    if (const Scaled_box* box = filtered.scaled_box())
+      if (!within(box->scaled[j], box->exponent)) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -186,4 +229,102 @@ TEST_CASE("the wide stage is tried only where the relative coordinates may leave
   CHECK(Vertices_of_predicate::may_leave_double_range(make_quadruple({0, 1, 2, 3}, small)));
   const std::vector<Site> overflowing = {{-1.7e308, 0, 0, 0}, {1.7e308, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
   CHECK(Vertices_of_predicate::may_leave_double_range(make_quadruple({0, 1, 2, 3}, overflowing)));
+}
+
+// The wide stage from another origin (vertices_of.h): any site of the quadruple may be the line's origin,
+// and the vertices, moved back to site 0, keep the exact stage's root labels, and their boxes hold them.
+TEST_CASE("vertices_of's wide stage from any origin agrees with the exact stage on clustered sites") {
+  std::mt19937_64 random(20261130);
+  int decided = 0, vertices = 0, only_from_other_origin = 0;
+  for (int trial = 0; trial < 6000; ++trial) {
+    CAPTURE(trial);
+    const std::vector<Site> sites = clustered_sites(random, 4);
+    const Quadruple q = make_quadruple({0, 1, 2, 3}, sites);
+    const Quadruple_vertices exact = Vertices_of_predicate::evaluate<Exact>(q);
+    bool from_origin_0 = false;
+    {
+      Rounding_guard guard;
+      try {
+        from_origin_0 = Vertices_of_predicate::vertices_on_line_if_certain(quadruple_line<Wide_interval>(q.sites), q).has_value();
+      } catch (const Uncertain_sign&) {
+      }
+    }
+    for (int m = 1; m < 4; ++m) {
+      CAPTURE(m);
+      std::optional<Quadruple_vertices> wide;
+      {
+        Rounding_guard guard;
+        try {
+          wide = Vertices_of_predicate::wide_vertices_from_origin(q, m);
+        } catch (const Uncertain_sign&) {
+        }
+      }
+      if (!wide) continue;
+      ++decided;
+      only_from_other_origin += !from_origin_0;
+      CHECK(wide->rank_deficient == exact.rank_deficient);
+      CHECK(wide->equidistant_curve == exact.equidistant_curve);
+      REQUIRE(wide->vertices.size() == exact.vertices.size());
+      for (std::size_t r = 0; r < exact.vertices.size(); ++r) {
+        CHECK(wide->vertices[r].root() == exact.vertices[r].root());
+        CHECK(boxes_hold(wide->vertices[r], exact.vertices[r]));
+        ++vertices;
+      }
+    }
+  }
+  MESSAGE("wide stage from sites 1 to 3: " << decided << " decided, " << vertices << " vertices, "
+                                           << only_from_other_origin << " where origin 0 was not certain");
+  CHECK(decided > 8000);
+  CHECK(vertices > 600);
+  CHECK(only_from_other_origin > 1500);
+}
+
+// vertex_conflict's and is_hidden's wide stages answer only the exact sign, and decide where a cluster's
+// site lies a hair from a vertex's site (vertex_conflict.h).
+TEST_CASE("vertex_conflict's and is_hidden's wide stages agree with the exact stage on clustered sites") {
+  std::mt19937_64 random(20261131);
+  int conflicts = 0, conflicts_beyond_intervals = 0, hidden = 0, hidden_beyond_intervals = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    CAPTURE(trial);
+    const std::vector<Site> sites = clustered_sites(random, 8);
+    const Quadruple q = make_quadruple({0, 1, 2, 3}, sites);
+    const Quadruple_vertices exact = Vertices_of_predicate::evaluate<Exact>(q);
+    for (const Vertex& v : exact.vertices)
+      for (std::size_t t = 4; t < sites.size(); ++t) {
+        CAPTURE(t);
+        std::optional<Sign> interval, wide;
+        {
+          Rounding_guard guard;
+          interval = Vertex_conflict_predicate::interval_stage(v, sites[t]);
+          wide = Vertex_conflict_predicate::wide_stage(v, sites[t]);
+        }
+        if (!wide) continue;
+        CHECK(*wide == Vertex_conflict_predicate::evaluate<Exact>(v, sites[t]));
+        ++conflicts;
+        conflicts_beyond_intervals += !interval;
+      }
+    for (Site_index i = 0; i < sites.size(); ++i)
+      for (Site_index j = 0; j < sites.size(); ++j) {
+        if (i == j) continue;
+        std::optional<bool> interval, wide;
+        {
+          Rounding_guard guard;
+          try {
+            interval = Is_hidden_predicate::evaluate<Interval>(sites[i], i, sites[j], j);
+          } catch (const Uncertain_sign&) {
+          }
+          wide = Is_hidden_predicate::wide_stage(sites[i], i, sites[j], j);
+        }
+        if (!wide) continue;
+        CHECK(*wide == Is_hidden_predicate::evaluate<Exact>(sites[i], i, sites[j], j));
+        ++hidden;
+        hidden_beyond_intervals += !interval;
+      }
+  }
+  MESSAGE("vertex_conflict: " << conflicts << " decided, " << conflicts_beyond_intervals
+                              << " beyond the intervals; is_hidden: " << hidden << ", " << hidden_beyond_intervals);
+  CHECK(conflicts > 1500);
+  CHECK(conflicts_beyond_intervals > 800);
+  CHECK(hidden > 150000);
+  CHECK(hidden_beyond_intervals > 15000);
 }
