@@ -121,11 +121,15 @@ struct Vertices_of_predicate {
     if (!roots) return std::nullopt;
     result.equidistant_curve = roots->whole_line_on_cone;
     const Relative_site<Wide_interval> shift = relative_site<Wide_interval>(q.sites[0], q.sites[m]);
+    const Quadruple from_m{q.indices, sites};
     for (const Line_root<Wide_interval>& root : roots->roots) {
       Vertex_coordinates<Wide_interval> X = coordinates_on_line(line, root.lambda);
+      // Validity before the move: r + w_j >= 0 does not depend on the origin, and relative to site 0, far
+      // from the vertex, X_3 + 2 b_j would cancel 2 w_0 down to 2 (r + w_j).
+      if (!is_valid_root(X, from_m)) continue;
       for (int j = 0; j < 3; ++j) X.scaled[j] = X.scaled[j] + Wide_interval(2) * shift.row[j];
       X.scaled[3] = X.scaled[3] - Wide_interval(2) * shift.row[3];
-      if (is_valid_root(X, q)) result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
+      result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
     }
     return result;
   }
