@@ -15,6 +15,7 @@
 #include "support/diagram_checks.h"
 #include "io/read_sites.h"
 #include "octree/octree_diagram.h"
+#include "predicates/predicate_counter.h"
 #include "reference/site_generators.h"
 #include "support/time_limit.h"
 
@@ -330,4 +331,28 @@ TEST_CASE("sites of one weight all on one sphere: one vertex holds them all") {
     CHECK(diagram.vertices[0].rounded == std::array<double, 4>{0, 0, 0, 84.5});
     validate_diagram(diagram, sites);
   }
+}
+
+// Sites from 1e-260 to 4e265 (a cluster 4e-9 wide beside balls of radius 1 and out to 4e265): the conflict
+// and hidden tests overflow plain intervals or cancel to the cluster's width relative to a far origin; the
+// wide stages, taken from the vertex's site nearest the tested one, decide them (vertex_conflict.h).
+TEST_CASE("sites from 1e-260 to 4e265: the wide stages decide the conflict and hidden tests") {
+  const std::vector<Site> sites =
+      read_sites(std::string(APOLLONIUS_TEST_DATA) +
+                     "/regression/far_field_enumerated_39k_quadruples_of_34_escaping_sites_to_4e265.balls", {})
+          .sites;
+  reset_predicate_statistics();
+  const Diagram diagram = octree_diagram(sites, Octree_options{1});
+  const std::vector<Predicate_statistics> statistics = predicate_statistics();
+  const auto of = [&](const std::string& name) {
+    const auto p = std::find_if(statistics.begin(), statistics.end(), [&](const Predicate_statistics& s) { return s.name == name; });
+    REQUIRE(p != statistics.end());
+    return *p;
+  };
+  CHECK(of("is_hidden").evaluations > 100);
+  CHECK(of("is_hidden").exact_stages == 0);  // 136 of 136 before the wide stage
+  CHECK(of("vertex_conflict").evaluations > 4000);
+  CHECK(of("vertex_conflict").exact_stages <= 10);  // 1,147 before
+  CHECK(of("vertices_of").exact_stages <= 200);     // 297 before the closest-pair retry
+  check_same(diagram, brute_force_diagram(sites));
 }
