@@ -75,8 +75,8 @@ struct Vertices_of_predicate {
     }
     if (!may_leave_double_range(q)) return std::nullopt;
     try {
-      if (std::optional<Quadruple_vertices> certain = vertices_on_line_if_certain(quadruple_line<Wide_interval>(q.sites), q))
-        return certain;
+      const Quadruple_line<Wide_interval> line = quadruple_line<Wide_interval>(q.sites);
+      if (std::optional<Quadruple_vertices> certain = vertices_on_line_if_certain(line, q)) return certain;
     } catch (const Uncertain_sign&) {
     }
     const int origin = closest_pair_origin(q);
@@ -111,27 +111,14 @@ struct Vertices_of_predicate {
   static std::optional<Quadruple_vertices> wide_vertices_from_origin(const Quadruple& q, int m) {
     std::array<Site, 4> sites = q.sites;
     std::swap(sites[0], sites[m]);
-    const Quadruple_line<Wide_interval> line = quadruple_line<Wide_interval>(sites);
-    Quadruple_vertices result;
-    if (line.pivot < 0) {
-      result.rank_deficient = true;
-      return result;
-    }
-    const std::optional<Line_roots<Wide_interval>> roots = line_roots(line);
-    if (!roots) return std::nullopt;
-    result.equidistant_curve = roots->whole_line_on_cone;
     const Relative_site<Wide_interval> shift = relative_site<Wide_interval>(q.sites[0], q.sites[m]);
-    const Quadruple from_m{q.indices, sites};
-    for (const Line_root<Wide_interval>& root : roots->roots) {
-      Vertex_coordinates<Wide_interval> X = coordinates_on_line(line, root.lambda);
-      // Validity before the move: r + w_j >= 0 does not depend on the origin, and relative to site 0, far
-      // from the vertex, X_3 + 2 b_j would cancel 2 w_0 down to 2 (r + w_j).
-      if (!is_valid_root(X, from_m)) continue;
+    // Validity is tested before the move (vertices_on_line_if_certain): r + w_j >= 0 does not depend on the
+    // origin, and relative to site 0, far from the vertex, X_3 + 2 b_j would cancel 2 w_0 down to 2 (r + w_j).
+    const auto move_back = [&](Vertex_coordinates<Wide_interval>& X) {
       for (int j = 0; j < 3; ++j) X.scaled[j] = X.scaled[j] + Wide_interval(2) * shift.row[j];
       X.scaled[3] = X.scaled[3] - Wide_interval(2) * shift.row[3];
-      result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
-    }
-    return result;
+    };
+    return vertices_on_line_if_certain(quadruple_line<Wide_interval>(sites), q, Quadruple{q.indices, sites}, move_back);
   }
 
   // Whether a relative coordinate (a_m, b_m: quadruple_line.h) lies beyond 2^64, or every one below
@@ -164,6 +151,15 @@ struct Vertices_of_predicate {
   template <class NT>
   static std::optional<Quadruple_vertices> vertices_on_line_if_certain(const Quadruple_line<NT>& line,
                                                                        const Quadruple& q) {
+    return vertices_on_line_if_certain(line, q, q, [](Vertex_coordinates<NT>&) {});
+  }
+
+  // The same for a line relative to the first site of line_sites (q's sites in another order): a root's
+  // validity is tested there, then move_back takes X to q's origin.
+  template <class NT, class Move_back>
+  static std::optional<Quadruple_vertices> vertices_on_line_if_certain(const Quadruple_line<NT>& line,
+                                                                       const Quadruple& q, const Quadruple& line_sites,
+                                                                       Move_back move_back) {
     Quadruple_vertices result;
     if (line.pivot < 0) {
       result.rank_deficient = true;
@@ -174,7 +170,9 @@ struct Vertices_of_predicate {
     result.equidistant_curve = roots->whole_line_on_cone;
     for (const Line_root<NT>& root : roots->roots) {
       Vertex_coordinates<NT> X = coordinates_on_line(line, root.lambda);
-      if (is_valid_root(X, q)) result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
+      if (!is_valid_root(X, line_sites)) continue;
+      move_back(X);
+      result.vertices.push_back(make_vertex(q, root.root, std::move(X)));
     }
     return result;
   }

@@ -345,7 +345,8 @@ TEST_CASE("sites from 1e-260 to 4e265: the wide stages decide the conflict and h
   const Diagram diagram = octree_diagram(sites, Octree_options{1});
   const std::vector<Predicate_statistics> statistics = predicate_statistics();
   const auto of = [&](const std::string& name) {
-    const auto p = std::find_if(statistics.begin(), statistics.end(), [&](const Predicate_statistics& s) { return s.name == name; });
+    const auto p = std::find_if(statistics.begin(), statistics.end(),
+                                [&](const Predicate_statistics& s) { return s.name == name; });
     REQUIRE(p != statistics.end());
     return *p;
   };

@@ -47,7 +47,8 @@ std::vector<Site> clustered_sites(std::mt19937_64& random, int count) {
   std::uniform_int_distribution<int> exponent(-700, 700), hair(20, 900), small(-4, 4), choice(0, 2);
   std::vector<Site> sites;
   const auto at_scale = [&](double scale) {
-    return Site{scale * small(random), scale * small(random), scale * small(random), scale * std::abs(small(random)) / 8};
+    return Site{scale * small(random), scale * small(random), scale * small(random),
+                scale * std::abs(small(random)) / 8};
   };
   while (static_cast<int>(sites.size()) < count) {
     if (sites.empty() || choice(random) == 0) {
@@ -55,7 +56,8 @@ std::vector<Site> clustered_sites(std::mt19937_64& random, int count) {
       continue;
     }
     const Site& near = sites[std::uniform_int_distribution<std::size_t>(0, sites.size() - 1)(random)];
-    const double scale = std::max({std::fabs(near.x), std::fabs(near.y), std::fabs(near.z), std::fabs(near.w), 0x1p-700});
+    const double scale =
+        std::max({std::fabs(near.x), std::fabs(near.y), std::fabs(near.z), std::fabs(near.w), 0x1p-700});
     const Site offset = at_scale(std::ldexp(scale, -hair(random)));
     sites.push_back({near.x + offset.x, near.y + offset.y, near.z + offset.z, near.w + offset.w});
   }
@@ -245,7 +247,8 @@ TEST_CASE("vertices_of's wide stage from any origin agrees with the exact stage 
     {
       Rounding_guard guard;
       try {
-        from_origin_0 = Vertices_of_predicate::vertices_on_line_if_certain(quadruple_line<Wide_interval>(q.sites), q).has_value();
+        const Quadruple_line<Wide_interval> line = quadruple_line<Wide_interval>(q.sites);
+        from_origin_0 = Vertices_of_predicate::vertices_on_line_if_certain(line, q).has_value();
       } catch (const Uncertain_sign&) {
       }
     }
