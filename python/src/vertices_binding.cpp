@@ -43,7 +43,7 @@ py::dict stats_to_python(const Computed& computed) {
                   "leaves"_a = o.leaves, "leaf_candidates"_a = o.leaf_candidates, "quadruples"_a = o.quadruples,
                   "distinct_quadruples"_a = o.distinct_quadruples, "far_field_quadruples"_a = o.far_field_quadruples,
                   "lifted_fallback"_a = o.lifted_fallback, "lifted_small_input"_a = o.lifted_small_input,
-                  "lifted_one_weight"_a = o.lifted_one_weight,
+                  "lifted_one_weight"_a = o.lifted_one_weight, "lifted_deep_input"_a = o.lifted_deep_input,
                   "lifted_seconds"_a = o.lifted_seconds, "lifted_quadruples"_a = o.lifted_quadruples);
   return py::dict("predicates"_a = predicates, "octree"_a = octree);
 }
@@ -108,8 +108,9 @@ threads: 1 to 1024 worker threads; the result is the same for every number.
 box: None, or (X0, Y0, Z0, X1, Y1, Z1): only the vertices whose centre lies in that closed box.
 stats: also count the predicates and their exact stages (counters shared by the whole process:
 concurrent computations in other threads add to them) and report the octree's phases.
-algorithm: "auto" (the lifted triangulation for at most 256 sites that are not hidden or for balls of one
-radius, else the octree),
+algorithm: "auto" (the lifted triangulation for at most 256 sites that are not hidden, for balls of one
+radius, or where the octree would refine through far more binades than the sites' spacing needs, such as
+a cluster beside one ball 1e12 away; else the octree),
 "octree" or "lifted", as the command line's --algorithm; the same answer from each.
 Returns Vertices: .points (m, 4), .tie_sets, .hidden, .sites_without_vertex, .stats.
 Raises ValueError for bad input (wrong shape, no exact float64, NaN or infinity, no site), with the

@@ -216,6 +216,22 @@ def test_balls_of_one_radius_take_the_delaunay_triangulation(tmp_path):
     assert max(len(automatic.tie_sets[i]) for i in range(len(automatic))) > 4 and len(automatic.hidden) > 0
 
 
+def test_a_cluster_beside_a_far_ball_takes_the_lifted_triangulation(tmp_path):
+    # 600 balls 1/8 apart or more and one ball 1e13 away: the octree would refine through 40 binades more
+    # than the cluster's spacing needs, so auto goes straight to the lifted triangulation, with the same answer.
+    rng = np.random.default_rng(5)
+    centres = np.vstack([rng.integers(0, 80, size=(600, 3)) / 8.0, [[1e13, -2e13, 3e12]]])
+    weights = np.concatenate([rng.integers(2, 8, size=600) / 8.0, [4.0]])
+    path = tmp_path / "far_ball.balls"
+    path.write_text("".join(f"{x:.17g} {y:.17g} {z:.17g} {w:.17g}\n" for (x, y, z), w in zip(centres, weights)))
+    automatic = apollonius3d.vertices(centres, weights, stats=True)
+    octree = apollonius3d.vertices(centres, weights, algorithm="octree", stats=True)
+    assert_equals_cli_json(automatic, cli_vertices_json(path, "--algorithm", "octree"))
+    assert_equals_cli_json(octree, cli_vertices_json(path))
+    assert automatic.stats["octree"]["lifted_deep_input"] and automatic.stats["octree"]["boxes"] == 0
+    assert not octree.stats["octree"]["lifted_deep_input"] and octree.stats["octree"]["boxes"] > 0
+
+
 def test_an_unknown_algorithm_is_a_value_error():
     with pytest.raises(ValueError, match="algorithm: 'brute' is not one of auto, octree, lifted"):
         apollonius3d.vertices([[0, 0, 0]], [1], algorithm="brute")

@@ -47,7 +47,10 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
   // The lifted fallback (octree_diagram.h, step 5), only when it ran.
   if (s.lifted_fallback)
     err << "lifted fallback\nlifted_reason "
-        << (s.lifted_small_input ? "small_input" : s.lifted_one_weight ? "one_weight" : "box_budget")
+        << (s.lifted_small_input  ? "small_input"
+            : s.lifted_one_weight ? "one_weight"
+            : s.lifted_deep_input ? "deep_input"
+                                  : "box_budget")
         << "\nlifted_seconds " << s.lifted_seconds << "\nlifted_quadruples " << s.lifted_quadruples << '\n';
 }
 
@@ -103,7 +106,8 @@ Command_run add_vertices_command(CLI::App& app) {
   sub->add_option("--format", command->format, "text or json (default: json for an OUT ending in .json)")
       ->check(CLI::IsMember({"text", "json"}));
   sub->add_option("--algorithm", command->algorithm,
-                  "auto (lifted up to 256 active sites or for balls of one radius, else octree), octree (paper\n"
+                  "auto (lifted up to 256 active sites, for balls of one radius, or where the octree would refine\n"
+                  "through far more binades than the sites' spacing needs; else octree), octree (paper\n"
                   "section 5.2; it turns to lifted past 512 boxes per site), lifted (the 3-faces of the lifted\n"
                   "regular triangulation in R^4; for one radius, the Delaunay triangulation of the centres), or\n"
                   "brute (the O(n^5) reference); all but brute give the same bytes")

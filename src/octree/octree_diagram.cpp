@@ -16,6 +16,7 @@
 #include "diagram/cancellable_steps.h"
 #include "octree/box_refinement.h"
 #include "octree/candidate_propagation.h"
+#include "octree/deep_clusters.h"
 #include "octree/far_field.h"
 #include "octree/lifted_triangulation.h"
 #include "octree/equal_weight_lifts.h"
@@ -133,9 +134,11 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const bool small_input = may_go_at_once && active.size() <= options.lifted_at_most_sites;
   const bool one_weight =
       may_go_at_once && !small_input && options.lifted_for_one_weight && has_one_weight(sites, active);
-  const std::size_t box_limit = options.regions != nullptr   ? std::numeric_limits<std::size_t>::max()
-                                : small_input || one_weight ? 0
-                                                            : budget_boxes;
+  const bool deep_input =
+      may_go_at_once && !small_input && !one_weight && options.lifted_for_deep_inputs && has_deep_clusters(sites, active);
+  const std::size_t box_limit = options.regions != nullptr                 ? std::numeric_limits<std::size_t>::max()
+                                : small_input || one_weight || deep_input ? 0
+                                                                          : budget_boxes;
   Box_budget budget(box_limit);
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
@@ -244,6 +247,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.lifted_fallback = true;
     statistics.lifted_small_input = small_input;
     statistics.lifted_one_weight = one_weight;
+    statistics.lifted_deep_input = deep_input;
     Lap_timer lifted_timer;
     arena.execute([&] {
       const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);

@@ -23,7 +23,9 @@
 //     Small inputs (at most 256 active sites, certified arithmetic) go to step 5 at once: there the
 //     triangulation is as fast or faster on all but one generated family and protein fragments measured
 //     (balls tangent to one sphere: 0.86), by up to 5 times where the octree's depth or exact stages
-//     dominate (docs/benchmarks.md, "Small inputs").
+//     dominate (docs/benchmarks.md, "Small inputs"). So do sites of one weight (equal_weight_lifts.h)
+//     and inputs whose octree would refine through many binades more than their sites' spacing needs
+//     (deep_clusters.h), where the triangulation was 2 to 9 times faster.
 //
 // Completeness. Removing a candidate is certified (centre_expansion.h): the site is strictly farther than
 // another at every point of the box. So every box's candidates include every site that owns a point of
@@ -56,6 +58,7 @@ struct Octree_statistics {
   bool lifted_fallback = false;
   bool lifted_small_input = false;  // it ran because of Octree_options::lifted_at_most_sites, not the budget
   bool lifted_one_weight = false;   // it ran because of Octree_options::lifted_for_one_weight
+  bool lifted_deep_input = false;   // it ran because of Octree_options::lifted_for_deep_inputs
   double lifted_seconds = 0;
   std::size_t lifted_quadruples = 0;
 };
@@ -111,6 +114,18 @@ struct Octree_options {
   // Inputs whose active sites all have one weight go to step 5 at once too, at any size, under the same
   // conditions: their lifted triangulation is the Delaunay triangulation of the centres (equal_weight_lifts.h).
   bool lifted_for_one_weight = true;
+  // Inputs whose octree would refine through more binades than their sites need (deep_clusters.h: a
+  // cluster beside a ball 2^32 times farther than its spacing, sites from 1e-260 to 1e265) go to step 5 at
+  // once too, under the same conditions.
+  bool lifted_for_deep_inputs = true;
+
+  // Never step 5 at once, whatever the input: the octree, and step 5 only past its budget (`--algorithm
+  // octree`, and the tests of the octree).
+  void never_lifted_at_once() {
+    lifted_at_most_sites = 0;
+    lifted_for_one_weight = false;
+    lifted_for_deep_inputs = false;
+  }
 };
 
 Diagram octree_diagram(const std::vector<Site>& sites, const Octree_options& options = {});

@@ -15,8 +15,7 @@ inline constexpr const char* kVertexAlgorithms[] = {"auto", "octree", "lifted"};
 // once. False for another name.
 inline bool use_vertex_algorithm(const std::string& name, Octree_options& options) {
   if (name == "octree") {
-    options.lifted_at_most_sites = 0;
-    options.lifted_for_one_weight = false;
+    options.never_lifted_at_once();
   } else if (name == "lifted") {
     options.box_budget = 0;
   } else if (name != "auto") {

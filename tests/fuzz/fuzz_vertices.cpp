@@ -66,8 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::optional<Diagram> octree;
   try {
     apollonius::Octree_options octree_only;
-    octree_only.lifted_at_most_sites = 0;
-    octree_only.lifted_for_one_weight = false;
+    octree_only.never_lifted_at_once();
     octree = apollonius::octree_diagram(sites, octree_only);
   } catch (const std::overflow_error&) {
     if (!centres_reach_double_range_limit(sites)) throw;

@@ -45,6 +45,7 @@ Octree_options with(const Cancellation* cancellation, int threads = 1, std::size
   options.cancellation = cancellation;
   options.lifted_at_most_sites = lifted_at_most_sites;
   options.lifted_for_one_weight = false;
+  options.lifted_for_deep_inputs = false;
   return options;
 }
 

@@ -41,8 +41,7 @@ Octree_statistics check_octree_equals_brute_force(const std::string& name, const
   Octree_options unlimited;
   unlimited.statistics = &statistics;
   unlimited.box_budget = std::numeric_limits<std::size_t>::max();
-  unlimited.lifted_at_most_sites = 0;
-  unlimited.lifted_for_one_weight = false;
+  unlimited.never_lifted_at_once();
   check_same(octree_diagram(sites, unlimited), reference);
   CHECK_FALSE(statistics.lifted_fallback);
   check_same(octree_diagram(sites), reference);

@@ -62,6 +62,12 @@ std::uint64_t seeds_for(Site_family family) {
   return from_environment("APOLLONIUS_DIFFERENTIAL_SEEDS", slow || tied ? 50 : 500);
 }
 
+// The first seed of every family: APOLLONIUS_DIFFERENTIAL_FIRST_SEED (default 1), so that a long run can
+// go on where an earlier one stopped.
+std::uint64_t first_seed() {
+  return std::max<std::uint64_t>(1, from_environment("APOLLONIUS_DIFFERENTIAL_FIRST_SEED", 1));
+}
+
 // Seconds one input may take, octree or brute force: APOLLONIUS_DIFFERENTIAL_TIME_LIMIT (default 60, so
 // that the sanitizer builds pass; the long runs set 1). Past it the program names the input and exits 124.
 double time_limit() { return seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60); }
@@ -99,7 +105,7 @@ TEST_CASE("octree equals brute force on every generator family") {
     const Site_family family = site_family_from_name(name);
     const std::uint64_t seeds = seeds_for(family);
     expected_inputs += seeds;
-    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    for (std::uint64_t seed = first_seed(); seed < first_seed() + seeds; ++seed) {
       const std::size_t n = 5 + (seed * 7919) % (max_sites - 4);  // 5 to max_sites sites
       CAPTURE(name);
       CAPTURE(seed);
@@ -111,8 +117,7 @@ TEST_CASE("octree equals brute force on every generator family") {
       reference_limit.stop();
       Input_time_limit octree_limit(time_limit(), input + " (octree)");
       Octree_options octree_only;
-      octree_only.lifted_at_most_sites = 0;  // these inputs are small: the default would take step 5 at once
-      octree_only.lifted_for_one_weight = false;
+      octree_only.never_lifted_at_once();  // these inputs are small: the default would take step 5 at once
       const Diagram octree = octree_diagram(sites, octree_only);
       const double seconds = octree_limit.stop();
       if (seconds > report_over()) MESSAGE("octree " << seconds << " s: " << input);
@@ -146,8 +151,7 @@ TEST_CASE("octree equals brute force on the small vdrc sets") {
     CAPTURE(name);
     const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/vdrc/" + name + ".txt", {}).sites;
     Octree_options octree_only;
-    octree_only.lifted_at_most_sites = 0;
-    octree_only.lifted_for_one_weight = false;
+    octree_only.never_lifted_at_once();
     const Diagram octree = octree_diagram(sites, octree_only);
     validate_diagram(octree, sites);
     const Diagram reference = brute_force_diagram(sites);
@@ -161,8 +165,7 @@ TEST_CASE("octree equals brute force on the small vdrc sets") {
 TEST_CASE("the output does not depend on the number of threads") {
   const std::vector<Site> sites = read_sites(std::string(APOLLONIUS_TEST_DATA) + "/pept.balls", {}).sites;
   Octree_options octree_only{1};
-  octree_only.lifted_at_most_sites = 0;  // pept has 107 sites
-  octree_only.lifted_for_one_weight = false;
+  octree_only.never_lifted_at_once();  // pept has 107 sites
   const Diagram one = octree_diagram(sites, octree_only);
   validate_diagram(one, sites);
   for (int threads : {2, 3, 8}) {
@@ -183,8 +186,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
   Octree_statistics unlimited_statistics;
   Octree_options unlimited{1, &unlimited_statistics};
   unlimited.box_budget = std::numeric_limits<std::size_t>::max();
-  unlimited.lifted_at_most_sites = 0;
-  unlimited.lifted_for_one_weight = false;
+  unlimited.never_lifted_at_once();
   const Diagram octree = octree_diagram(sites, unlimited);
   CHECK_FALSE(unlimited_statistics.lifted_fallback);
   REQUIRE(unlimited_statistics.boxes > 4096);
@@ -193,8 +195,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     Octree_statistics statistics;
     Octree_options budgeted{threads, &statistics};
     budgeted.box_budget = 2048;
-    budgeted.lifted_at_most_sites = 0;
-    budgeted.lifted_for_one_weight = false;
+    budgeted.never_lifted_at_once();
     check_same(octree_diagram(sites, budgeted), octree);
     CHECK(statistics.lifted_fallback);
     CHECK_FALSE(statistics.lifted_small_input);
@@ -221,8 +222,7 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
     CAPTURE(n);
     const std::vector<Site> sites = generate_sites(Site_family::uniform, n, 5);
     Octree_options octree_only;
-    octree_only.lifted_at_most_sites = 0;
-    octree_only.lifted_for_one_weight = false;
+    octree_only.never_lifted_at_once();
     Octree_statistics octree_statistics;
     octree_only.statistics = &octree_statistics;
     const Diagram octree = octree_diagram(sites, octree_only);
@@ -282,8 +282,7 @@ TEST_CASE("sites of one weight go to the Delaunay triangulation at once, at any 
     CAPTURE(name);
     Input_time_limit limit(time_limit(), name);
     Octree_options octree_only;
-    octree_only.lifted_at_most_sites = 0;
-    octree_only.lifted_for_one_weight = false;
+    octree_only.never_lifted_at_once();
     const Diagram octree = octree_diagram(sites, octree_only);
     validate_diagram(octree, sites);
     const std::size_t active = sites.size() - octree.hidden.size();
@@ -356,4 +355,42 @@ TEST_CASE("sites from 1e-260 to 4e265: the wide stages decide the conflict and h
   CHECK(of("vertex_conflict").exact_stages <= 10);  // 1,147 before
   CHECK(of("vertices_of").exact_stages <= 200);     // 297 before the closest-pair retry
   check_same(diagram, brute_force_diagram(sites));
+}
+
+// Deep inputs (octree_diagram.h, step 5; deep_clusters.h): a cluster beside a far ball, and sites from
+// 1e-260 to 1e265, go to the lifted triangulation at once, with the octree's output, for every thread count;
+// not with regions, nor when the octree is asked for.
+TEST_CASE("deep inputs go to the lifted triangulation at once") {
+  std::vector<Site> cluster_and_far_ball = generate_sites(Site_family::uniform, 700, 14);
+  cluster_and_far_ball.push_back({-3e13, 2e13, 1e13, 2});
+  const std::vector<std::pair<std::string, std::vector<Site>>> inputs = {
+      {"wide-range 600", generate_sites(Site_family::wide_range, 600, 4)},
+      {"uniform 700 and a ball 3e13 away", cluster_and_far_ball}};
+  for (const auto& [name, sites] : inputs) {
+    CAPTURE(name);
+    Input_time_limit limit(time_limit(), name);
+    Octree_options octree_only;
+    octree_only.never_lifted_at_once();
+    Octree_statistics octree_statistics;
+    octree_only.statistics = &octree_statistics;
+    const Diagram octree = octree_diagram(sites, octree_only);
+    validate_diagram(octree, sites);
+    REQUIRE(sites.size() - octree.hidden.size() > Octree_options{}.lifted_at_most_sites);
+    CHECK_FALSE(octree_statistics.lifted_deep_input);
+    for (int threads : {1, 2}) {
+      CAPTURE(threads);
+      Octree_statistics statistics;
+      check_same(octree_diagram(sites, Octree_options{threads, &statistics}), octree);
+      CHECK(statistics.lifted_deep_input);
+      CHECK_FALSE(statistics.lifted_small_input);
+      CHECK(statistics.boxes == 0);
+    }
+    Octree_statistics with_regions_statistics;
+    Octree_regions regions;
+    Octree_options with_regions{1, &with_regions_statistics};
+    with_regions.regions = &regions;
+    check_same(octree_diagram(sites, with_regions), octree);
+    CHECK_FALSE(with_regions_statistics.lifted_fallback);
+    limit.stop();
+  }
 }
