@@ -3,6 +3,8 @@
 // later index is the hidden one, so that exactly one of them stays.
 #pragma once
 
+#include <optional>
+
 #include "predicates/filtered_predicate.h"
 #include "predicates/site.h"
 #include "predicates/wide_interval.h"

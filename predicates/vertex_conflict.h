@@ -9,6 +9,9 @@
 // an ulp), the exception costs more than the test.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 
 #include "predicates/filtered_predicate.h"
@@ -59,7 +62,7 @@ struct Vertex_conflict_predicate {
     const long k = scaled != nullptr ? scaled->exponent : 0;
     const std::array<Site, 4>& sites = v.quadruple().sites;
     const auto distance = [&](const Site& q) {
-      return std::max({std::abs(s.x - q.x), std::abs(s.y - q.y), std::abs(s.z - q.z), std::abs(s.w - q.w)});
+      return std::max({std::fabs(s.x - q.x), std::fabs(s.y - q.y), std::fabs(s.z - q.z), std::fabs(s.w - q.w)});
     };
     int nearest = 0;
     for (int m = 1; m < 4; ++m)
