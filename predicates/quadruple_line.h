@@ -11,7 +11,9 @@
 // with <x,y>_L = x0 y0 + x1 y1 + x2 y2 - x3 y3. Coplanar quadruples (n_3 = 0) need no special case.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <type_traits>
 
 #include "predicates/double_with_magnitude.h"
@@ -59,6 +61,22 @@ Relative_site<NT> relative_site(const Site& origin, const Site& s) {
            difference_of<NT>(s.w, origin.w)};
   r.rhs = r.row[0] * r.row[0] + r.row[1] * r.row[1] + r.row[2] * r.row[2] - r.row[3] * r.row[3];
   return r;
+}
+
+// A vertex's X = 2 (v - p_from, r + w_from) (vertex.h, denominator 1) taken to the origin `to`:
+// X - 2 (p_to - p_from, w_from - w_to). What a predicate computes from X and its origin does not depend on
+// the origin; an error e in X costs |p_s - p_to| e in a test against site s, so a near origin is cheaper.
+template <class NT>
+void move_origin(std::array<NT, 4>& X, const Site& from, const Site& to) {
+  const Vector4<NT> shift = relative_site<NT>(from, to).row;
+  for (int j = 0; j < 3; ++j) X[j] = X[j] - NT(2) * shift[j];
+  X[3] = X[3] + NT(2) * shift[3];
+}
+
+// max(|dx|, |dy|, |dz|, |dw|) in rounded doubles (infinite where a difference overflows): only for
+// choosing an origin, which changes a filter's precision and never a sign.
+inline double coarse_distance(const Site& a, const Site& b) {
+  return std::max({std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z), std::fabs(a.w - b.w)});
 }
 
 // The 3x3 minors of the 3 x 5 matrix [M | c] (columns 0..3 of M, column 4 = c), by Laplace expansion along

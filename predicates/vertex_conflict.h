@@ -9,9 +9,7 @@
 // an ulp), the exception costs more than the test.
 #pragma once
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <optional>
 
 #include "predicates/filtered_predicate.h"
@@ -52,31 +50,23 @@ struct Vertex_conflict_predicate {
   }
 
   // evaluate<Wide_interval>, for sites whose rows squared leave the double range (1e-260 beside 1e265),
-  // relative to the vertex's site q nearest to s instead of its origin: |v - p_s|^2 - (r + w_s)^2 does not
-  // depend on the origin, and X_q = X - 2 (p_q - p_o, w_o - w_q) (X = 2 (v - p_o, r + w_o)), so an error
-  // e in X costs only |p_s - p_q| e. A site a hair from one of the vertex's sites (a cluster 1e-9 wide
-  // beside balls of radius 1) is then decided without the exact stage.
+  // relative to the vertex's site q nearest to s instead of its origin (move_origin, quadruple_line.h):
+  // |v - p_s|^2 - (r + w_s)^2 does not depend on the origin, and an error e in X then costs only
+  // |p_s - p_q| e. A site a hair from one of the vertex's sites (a cluster 1e-9 wide beside balls of
+  // radius 1) is then decided without the exact stage.
   static std::optional<Sign> wide_stage(const Vertex& v, const Site& s) {
     const Scaled_box* scaled = v.scaled_box();
     const std::array<Interval, 4>& box = scaled != nullptr ? scaled->scaled : v.coordinates<Interval>().scaled;
     const long k = scaled != nullptr ? scaled->exponent : 0;
     const std::array<Site, 4>& sites = v.quadruple().sites;
-    const auto distance = [&](const Site& q) {
-      return std::max({std::fabs(s.x - q.x), std::fabs(s.y - q.y), std::fabs(s.z - q.z), std::fabs(s.w - q.w)});
-    };
     int nearest = 0;
     for (int m = 1; m < 4; ++m)
-      if (distance(sites[m]) < distance(sites[nearest])) nearest = m;
-    const Site& o = sites[0];
+      if (coarse_distance(s, sites[m]) < coarse_distance(s, sites[nearest])) nearest = m;
     const Site& q = sites[nearest];
     try {
       std::array<Wide_interval, 4> X;
       for (int j = 0; j < 4; ++j) X[j] = Wide_interval::with_exponent(box[j], k);
-      if (nearest != 0) {
-        const Relative_site<Wide_interval> shift = relative_site<Wide_interval>(o, q);
-        for (int j = 0; j < 3; ++j) X[j] = X[j] - Wide_interval(2) * shift.row[j];
-        X[3] = X[3] + Wide_interval(2) * shift.row[3];
-      }
+      if (nearest != 0) move_origin(X, sites[0], q);
       const Relative_site<Wide_interval> a = relative_site<Wide_interval>(q, s);
       const std::optional<Sign> valid = sign_if_certain(X[3] + Wide_interval(2) * a.row[3]);
       if (!valid) return std::nullopt;

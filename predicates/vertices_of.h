@@ -92,32 +92,24 @@ struct Vertices_of_predicate {
   // beside far ones (a cluster 1e-9 wide beside balls of radius 1) give M two rows equal to within the
   // hair when the origin is a far site, and rows of their own sizes when it is one of the two.
   static int closest_pair_origin(const Quadruple& q) {
-    const auto distance = [&](int i, int j) {
-      const Site &s = q.sites[i], &t = q.sites[j];
-      return std::max({std::fabs(s.x - t.x), std::fabs(s.y - t.y), std::fabs(s.z - t.z), std::fabs(s.w - t.w)});
-    };
     int origin = 0;
     double closest = INFINITY;
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
-        if (distance(i, j) < closest) closest = distance(i, j), origin = i;
+        if (const double d = coarse_distance(q.sites[i], q.sites[j]); d < closest) closest = d, origin = i;
     return origin;
   }
 
   // The wide stage with site m of the quadruple as the origin of the line, its vertices moved back to
-  // site 0: X = X_m + 2 (p_m - p_0, w_0 - w_m). M's rows relative to site m span the same space, so n
+  // site 0 (move_origin, quadruple_line.h). M's rows relative to site m span the same space, so n
   // changes by a nonzero factor c: the pivot (the first k with n_k != 0) stays, A = <n, n> changes by
   // c^2 > 0, and X_k = lambda moves by a constant, so each root keeps its label (MINUS, PLUS, SINGLE).
   static std::optional<Quadruple_vertices> wide_vertices_from_origin(const Quadruple& q, int m) {
     std::array<Site, 4> sites = q.sites;
     std::swap(sites[0], sites[m]);
-    const Relative_site<Wide_interval> shift = relative_site<Wide_interval>(q.sites[0], q.sites[m]);
     // Validity is tested before the move (vertices_on_line_if_certain): r + w_j >= 0 does not depend on the
     // origin, and relative to site 0, far from the vertex, X_3 + 2 b_j would cancel 2 w_0 down to 2 (r + w_j).
-    const auto move_back = [&](Vertex_coordinates<Wide_interval>& X) {
-      for (int j = 0; j < 3; ++j) X.scaled[j] = X.scaled[j] + Wide_interval(2) * shift.row[j];
-      X.scaled[3] = X.scaled[3] - Wide_interval(2) * shift.row[3];
-    };
+    const auto move_back = [&](Vertex_coordinates<Wide_interval>& X) { move_origin(X.scaled, q.sites[m], q.sites[0]); };
     return vertices_on_line_if_certain(quadruple_line<Wide_interval>(sites), q, Quadruple{q.indices, sites}, move_back);
   }
 

@@ -36,6 +36,16 @@ void check_same(const Diagram& octree, const Diagram& reference) {
   CHECK(octree.sites_without_vertex == reference.sites_without_vertex);
 }
 
+// With the regions asked for (the whole diagram), step 5 never runs at once: the octree's own output.
+void check_regions_keep_the_octree(const std::vector<Site>& sites, const Diagram& octree) {
+  Octree_statistics statistics;
+  Octree_regions regions;
+  Octree_options with_regions{1, &statistics};
+  with_regions.regions = &regions;
+  check_same(octree_diagram(sites, with_regions), octree);
+  CHECK_FALSE(statistics.lifted_fallback);
+}
+
 // APOLLONIUS_DIFFERENTIAL_SEEDS and APOLLONIUS_DIFFERENTIAL_MAX_SITES raise the number of seeds per family
 // and the largest input (default 40 sites) for long runs; APOLLONIUS_DIFFERENTIAL_FAMILIES (names separated
 // by commas) runs only those families, so that a long run can be split across processes.
@@ -236,12 +246,7 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
     CHECK(statistics.lifted_small_input == (active <= limit));
     CHECK(statistics.boxes == (active <= limit ? 0 : octree_statistics.boxes));
 
-    Octree_statistics with_regions_statistics;
-    Octree_regions regions;
-    Octree_options with_regions{1, &with_regions_statistics};
-    with_regions.regions = &regions;
-    check_same(octree_diagram(sites, with_regions), octree);
-    CHECK_FALSE(with_regions_statistics.lifted_fallback);
+    check_regions_keep_the_octree(sites, octree);
 
     Octree_statistics floating_statistics;
     octree_diagram(sites, Octree_options{1, &floating_statistics, Arithmetic::floating});
@@ -385,12 +390,7 @@ TEST_CASE("deep inputs go to the lifted triangulation at once") {
       CHECK_FALSE(statistics.lifted_small_input);
       CHECK(statistics.boxes == 0);
     }
-    Octree_statistics with_regions_statistics;
-    Octree_regions regions;
-    Octree_options with_regions{1, &with_regions_statistics};
-    with_regions.regions = &regions;
-    check_same(octree_diagram(sites, with_regions), octree);
-    CHECK_FALSE(with_regions_statistics.lifted_fallback);
+    check_regions_keep_the_octree(sites, octree);
     limit.stop();
   }
 }
