@@ -40,10 +40,12 @@ py::dict stats_to_python(const Computed& computed) {
                   "refinement_seconds"_a = o.refinement_seconds, "far_field_seconds"_a = o.far_field_seconds,
                   "assembly_seconds"_a = o.assembly_seconds, "seed_boxes"_a = o.seed_boxes,
                   "seed_candidates"_a = o.seed_candidates, "escaping_sites"_a = o.escaping_sites, "boxes"_a = o.boxes,
+                  "box_candidates"_a = o.box_candidates,
                   "leaves"_a = o.leaves, "leaf_candidates"_a = o.leaf_candidates, "quadruples"_a = o.quadruples,
                   "distinct_quadruples"_a = o.distinct_quadruples, "far_field_quadruples"_a = o.far_field_quadruples,
                   "lifted_fallback"_a = o.lifted_fallback, "lifted_small_input"_a = o.lifted_small_input,
                   "lifted_one_weight"_a = o.lifted_one_weight, "lifted_deep_input"_a = o.lifted_deep_input,
+                  "lifted_seed_candidates"_a = o.lifted_seed_candidates,
                   "lifted_seconds"_a = o.lifted_seconds, "lifted_quadruples"_a = o.lifted_quadruples);
   return py::dict("predicates"_a = predicates, "octree"_a = octree);
 }

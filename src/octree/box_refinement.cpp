@@ -150,6 +150,7 @@ template <class Kernel>
 void Box_refinement<Kernel>::refine(const Axis_box& box, std::size_t first, int depth, int stagnant,
                             std::vector<Found_vertex>& out) {
   const std::size_t end = stack_.size();
+  counts_.box_candidates += end - first;
   if (++counts_.boxes % kBoxesPerCancellationCheck == 0) {
     throw_if_cancelled(cancellation_);
     if (budget_ != nullptr) budget_->spend(kBoxesPerCancellationCheck);

@@ -23,7 +23,7 @@
 #include "diagram/cancellation.h"
 #include "predicates/axis_box.h"
 #include "predicates/centre_expansion.h"
-#include "octree/box_budget.h"
+#include "octree/work_budget.h"
 #include "octree/leaf_decision.h"
 #include "octree/octree_diagram.h"
 #include "octree/quadruple_cache.h"
@@ -34,6 +34,7 @@ namespace apollonius {
 // How much refining was done: boxes filtered, leaves decided, and candidates in those leaves.
 struct Refinement_counts {
   std::size_t boxes = 0, leaves = 0, leaf_candidates = 0, quadruples = 0, distinct_quadruples = 0;
+  std::size_t box_candidates = 0;  // the candidates of every box refined, summed: the refinement's work
 };
 
 // Work space for refining boxes, one per thread. Kernel: kernels.h.
@@ -42,9 +43,9 @@ class Box_refinement {
  public:
   // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
   // `cancellation` is checked every thousand boxes or so (one seed box can take a second), and as often
-  // the boxes are spent from `budget` when given (box_budget.h).
+  // the boxes are spent from `budget` when given (work_budget.h).
   Box_refinement(const std::vector<Site>& sites, const Axis_box& root, const Cancellation* cancellation = nullptr,
-                 Box_budget* budget = nullptr)
+                 Work_budget* budget = nullptr)
       : sites_(sites), root_(root), cancellation_(cancellation), budget_(budget), star_(sites) {}
 
   // Appends every vertex located in the box (half-open, closed on the root's upper faces), with its tie set.
@@ -89,7 +90,7 @@ class Box_refinement {
   const std::vector<Site>& sites_;
   Axis_box root_;
   const Cancellation* cancellation_;
-  Box_budget* budget_;
+  Work_budget* budget_;
   std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
   std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
   std::vector<Site_index> tie_;

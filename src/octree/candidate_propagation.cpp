@@ -161,14 +161,17 @@ void flood(Flood& f, const Box_graph& graph, const std::vector<Site>& sites, con
 std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
                                                           const std::vector<Site_index>& active,
                                                           const Seed_partition& partition, double slack,
-                                                          const Cancellation* cancellation) {
+                                                          const Cancellation* cancellation, Work_budget* budget) {
   Box_graph graph(partition, cancellation);
   find_witnesses(graph, sites, active, partition, cancellation);
 
   tbb::enumerable_thread_specific<Flood> floods(partition.id_count());
   tbb::parallel_for(std::size_t{0}, active.size(), [&](std::size_t k) {
     throw_if_cancelled(cancellation);
-    flood(floods.local(), graph, sites, partition, active[k], slack);
+    Flood& local = floods.local();
+    const std::size_t entered = local.entered.size();
+    flood(local, graph, sites, partition, active[k], slack);
+    if (budget != nullptr) budget->spend(local.entered.size() - entered);
   });
   std::vector<std::size_t> count(partition.id_count(), 0);
   for (const Flood& f : floods)

@@ -46,6 +46,12 @@ constexpr std::size_t kReservedVerticesPerSite = 8;
 // The refinement's budget when only the vertices are asked for (octree_diagram.h, step 5).
 constexpr std::size_t kBoxesPerSiteBeforeLifted = 512;
 constexpr std::size_t kBoxesBeforeLifted = 16384;
+// The propagation's budget: seed candidates, (seed box, site) pairs. The benchmark inputs and the generated
+// families that the octree suits enter 5 to 55 per site (docs/benchmarks.md, "A budget of seed
+// candidates"); one ball 10^6 away from 10,000 others made 6,000 per site, and their refinement took 35 s
+// where the triangulation takes 3.
+constexpr std::size_t kSeedCandidatesPerSiteBeforeLifted = 128;
+constexpr std::size_t kSeedCandidatesBeforeLifted = 16384;
 
 // Seconds since the last call (or construction).
 class Lap_timer {
@@ -139,17 +145,21 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const std::size_t box_limit = options.regions != nullptr                 ? std::numeric_limits<std::size_t>::max()
                                 : small_input || one_weight || deep_input ? 0
                                                                           : budget_boxes;
-  Box_budget budget(box_limit);
+  Work_budget budget(box_limit);
+  Work_budget seed_budget(options.regions != nullptr ? std::numeric_limits<std::size_t>::max()
+                                                     : options.seed_candidate_budget.value_or(
+                                                           kSeedCandidatesPerSiteBeforeLifted * active.size() +
+                                                           kSeedCandidatesBeforeLifted));
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
   tbb::task_arena arena(threads);
   try {
-    if (box_limit == 0) throw Box_budget_exceeded();
+    if (box_limit == 0) throw Work_budget_exceeded();
     arena.execute([&] {
       const Seed_partition partition(sites, active, kFarFieldScale);
       statistics.partition_seconds = timer.lap();
       const std::vector<std::vector<Site_index>> candidates =
-          propagate_candidates(sites, active, partition, Kernel::filter_slack, options.cancellation);
+          propagate_candidates(sites, active, partition, Kernel::filter_slack, options.cancellation, &seed_budget);
       statistics.propagation_seconds = timer.lap();
 
       // The sites owning a point outside R own a point of its boundary, so they are candidates of the boxes
@@ -228,6 +238,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
         statistics.boxes += counts.boxes;
         statistics.leaves += counts.leaves;
         statistics.leaf_candidates += counts.leaf_candidates;
+        statistics.box_candidates += counts.box_candidates;
         statistics.quadruples += counts.quadruples;
         statistics.distinct_quadruples += counts.distinct_quadruples;
       }
@@ -239,7 +250,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       }
       statistics.far_field_quadruples = far.quadruples;
     });
-  } catch (const Box_budget_exceeded&) {
+  } catch (const Work_budget_exceeded&) {
     // Step 5: what the refinement found goes, and the vertices come from the lifted triangulation.
     lists.clear();
     statistics = Octree_statistics{};
@@ -248,6 +259,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.lifted_small_input = small_input;
     statistics.lifted_one_weight = one_weight;
     statistics.lifted_deep_input = deep_input;
+    statistics.lifted_seed_candidates = seed_budget.exceeded();
     Lap_timer lifted_timer;
     arena.execute([&] {
       const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);

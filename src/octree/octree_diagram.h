@@ -17,7 +17,10 @@
 //     balls tangent to one circle, all tied at its centre, took over 120 s and 8 million boxes beside the
 //     circle; the triangulation of their lifts has 9,583 3-faces. On the benchmark inputs the octree uses
 //     8 to 60 boxes per site and never reaches the budget; there it is about twice as fast as the
-//     triangulation at thousands of sites. Cost: at most the budget's boxes plus the triangulation,
+//     triangulation at thousands of sites. So does the propagation, past a budget of seed candidates (128
+//     per active site, plus 16,384): seed boxes far smaller than the cells they cut, as around a cluster
+//     beside one far ball, each hold thousands of candidates that every box below them tests again.
+//     Cost: at most the budgets' boxes and seed candidates plus the triangulation,
 //     O(n log n) expected for n lifts in general position. Both decide every vertex exactly, so the
 //     output is the same whichever ran, for every thread count.
 //     Small inputs (at most 256 active sites, certified arithmetic) go to step 5 at once: there the
@@ -35,6 +38,7 @@
 // candidates of the boxes on R's boundary, which include every site owning a point outside R.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -53,12 +57,14 @@ struct Octree_statistics {
          assembly_seconds = 0;
   std::size_t seed_boxes = 0, seed_candidates = 0, escaping_sites = 0, boxes = 0, leaves = 0, leaf_candidates = 0,
               quadruples = 0, distinct_quadruples = 0, far_field_quadruples = 0;
+  std::size_t box_candidates = 0;  // the candidates of every box refined, summed (seed boxes included)
   // The lifted fallback (step 5): its time and its 3-faces. The counts above then stay 0, but boxes: those
   // the refinement had reported to the budget when it stopped.
   bool lifted_fallback = false;
   bool lifted_small_input = false;  // it ran because of Octree_options::lifted_at_most_sites, not the budget
   bool lifted_one_weight = false;   // it ran because of Octree_options::lifted_for_one_weight
   bool lifted_deep_input = false;   // it ran because of Octree_options::lifted_for_deep_inputs
+  bool lifted_seed_candidates = false;  // it ran because the propagation spent its budget, not the refinement
   double lifted_seconds = 0;
   std::size_t lifted_quadruples = 0;
 };
@@ -108,6 +114,9 @@ struct Octree_options {
   // The boxes the refinement may spend before step 5 takes over; automatic (512 per active site, plus
   // 16,384) when not given, and 0 goes to step 5 at once. Ignored (never spent) when regions are asked for.
   std::optional<std::size_t> box_budget{};
+  // The (seed box, site) pairs the propagation may enter before step 5 takes over; automatic (128 per
+  // active site, plus 16,384) when not given. Ignored when regions are asked for.
+  std::optional<std::size_t> seed_candidate_budget{};
   // Inputs of at most this many active sites go to step 5 at once, when only the vertices are asked for and
   // the arithmetic is certified (the floating path is the octree's, for comparison); 0: never.
   std::size_t lifted_at_most_sites = 256;
@@ -125,6 +134,13 @@ struct Octree_options {
     lifted_at_most_sites = 0;
     lifted_for_one_weight = false;
     lifted_for_deep_inputs = false;
+  }
+  // The octree alone, whatever it costs: never step 5, at once or past a budget (the tests that compare
+  // the octree itself).
+  void octree_alone() {
+    never_lifted_at_once();
+    box_budget = std::numeric_limits<std::size_t>::max();
+    seed_candidate_budget = std::numeric_limits<std::size_t>::max();
   }
 };
 

@@ -11,6 +11,7 @@
 #include "reference/brute_force_diagram.h"
 #include "support/cli_helpers.h"
 #include "io/read_sites.h"
+#include "io/write_sites.h"
 #include "io/write_vertices.h"
 #include "reference/site_generators.h"
 
@@ -251,6 +252,26 @@ TEST_CASE("vertices of a generated file are the vertices of the generated sites"
     const Cli_result by_default = run({"vertices", file, "--stats"});
     CHECK(by_default.out == expected.str());
     CHECK(by_default.err.find("lifted_reason small_input") != std::string::npos);
+  }
+}
+
+TEST_CASE("vertices names the seed candidates' budget as the reason it took the lifted triangulation") {
+  Scratch scratch;
+  std::vector<Site> sites = generate_sites(Site_family::uniform, 1000, 3);
+  sites.push_back({1e6, 0, 0, 1});  // the seed boxes between it and the others hold hundreds of sites each
+  const std::string file = scratch.path("ball_1e6_away.balls");
+  {
+    std::ofstream out(file);
+    write_sites_text(out, sites, "uniform 1000 and a ball 1e6 away");
+  }
+  const Cli_result lifted = run({"vertices", file, "--algorithm", "lifted"});
+  REQUIRE(lifted.code == EXIT_OK);
+  for (const std::string algorithm : {"auto", "octree"}) {
+    CAPTURE(algorithm);
+    const Cli_result r = run({"vertices", file, "--algorithm", algorithm, "--stats"});
+    REQUIRE(r.code == EXIT_OK);
+    CHECK(r.out == lifted.out);
+    CHECK(r.err.find("lifted_reason seed_candidates") != std::string::npos);
   }
 }
 

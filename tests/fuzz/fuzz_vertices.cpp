@@ -67,6 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     apollonius::Octree_options octree_only;
     octree_only.never_lifted_at_once();
+    octree_only.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
     octree = apollonius::octree_diagram(sites, octree_only);
   } catch (const std::overflow_error&) {
     if (!centres_reach_double_range_limit(sites)) throw;

@@ -40,8 +40,7 @@ Octree_statistics check_octree_equals_brute_force(const std::string& name, const
   Octree_statistics statistics;
   Octree_options unlimited;
   unlimited.statistics = &statistics;
-  unlimited.box_budget = std::numeric_limits<std::size_t>::max();
-  unlimited.never_lifted_at_once();
+  unlimited.octree_alone();
   check_same(octree_diagram(sites, unlimited), reference);
   CHECK_FALSE(statistics.lifted_fallback);
   check_same(octree_diagram(sites), reference);

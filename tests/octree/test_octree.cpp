@@ -127,7 +127,10 @@ TEST_CASE("octree equals brute force on every generator family") {
       reference_limit.stop();
       Input_time_limit octree_limit(time_limit(), input + " (octree)");
       Octree_options octree_only;
-      octree_only.never_lifted_at_once();  // these inputs are small: the default would take step 5 at once
+      // These inputs are small: the defaults would take step 5 at once, or past the seed candidates' budget
+      // on deep ones.
+      octree_only.never_lifted_at_once();
+      octree_only.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
       const Diagram octree = octree_diagram(sites, octree_only);
       octree_limit.stop();
       const double seconds = octree_limit.cpu_seconds();
@@ -197,8 +200,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
   const std::vector<Site> sites = generate_sites(Site_family::circle_tangent, 60, 3);
   Octree_statistics unlimited_statistics;
   Octree_options unlimited{1, &unlimited_statistics};
-  unlimited.box_budget = std::numeric_limits<std::size_t>::max();
-  unlimited.never_lifted_at_once();
+  unlimited.octree_alone();
   const Diagram octree = octree_diagram(sites, unlimited);
   CHECK_FALSE(unlimited_statistics.lifted_fallback);
   REQUIRE(unlimited_statistics.boxes > 4096);
@@ -207,6 +209,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     Octree_statistics statistics;
     Octree_options budgeted{threads, &statistics};
     budgeted.box_budget = 2048;
+    budgeted.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
     budgeted.never_lifted_at_once();
     check_same(octree_diagram(sites, budgeted), octree);
     CHECK(statistics.lifted_fallback);
@@ -225,6 +228,72 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
   }
 }
 
+// One ball far from a cluster: the seed boxes between them are far smaller than the cells of the cluster's
+// sites that face the ball, and each holds hundreds of them. The propagation's budget of seed candidates
+// (octree_diagram.h, step 5) sends such inputs to the lifted triangulation, with the octree's output;
+// never when regions are asked for. Inputs the octree suits stay far below it (at most 55 per site).
+TEST_CASE("the propagation turns to the lifted triangulation once its seed candidates pass the budget") {
+  std::vector<Site> sites = generate_sites(Site_family::uniform, 1000, 3);
+  sites.push_back({1e6, 0, 0, 1});
+  Input_time_limit limit(time_limit(), "uniform 1000 and a ball 1e6 away");
+  Octree_statistics unlimited_statistics;
+  Octree_options unlimited{1, &unlimited_statistics};
+  unlimited.octree_alone();
+  const Diagram octree = octree_diagram(sites, unlimited);
+  validate_diagram(octree, sites);
+  CHECK_FALSE(unlimited_statistics.lifted_fallback);
+  const std::size_t active = sites.size() - octree.hidden.size();
+  REQUIRE(active > Octree_options{}.lifted_at_most_sites);
+  CHECK(unlimited_statistics.seed_candidates > 128 * active + 16384);  // the default budget
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    Octree_statistics statistics;
+    Octree_options automatic{threads, &statistics};
+    check_same(octree_diagram(sites, automatic), octree);
+    CHECK(statistics.lifted_fallback);
+    CHECK(statistics.lifted_seed_candidates);
+    CHECK_FALSE(statistics.lifted_deep_input);
+    CHECK(statistics.boxes == 0);  // the propagation stopped before any box was refined
+
+    Octree_statistics with_regions_statistics;
+    Octree_regions regions;
+    Octree_options with_regions{threads, &with_regions_statistics};
+    with_regions.regions = &regions;
+    check_same(octree_diagram(sites, with_regions), octree);
+    CHECK_FALSE(with_regions_statistics.lifted_fallback);
+    CHECK(with_regions_statistics.seed_candidates == unlimited_statistics.seed_candidates);
+  }
+  // A budget below an ordinary input's seed candidates takes step 5 too; the box budget's reason stays apart.
+  const std::vector<Site> uniform = generate_sites(Site_family::uniform, 1000, 4);
+  Octree_options octree_only;
+  octree_only.never_lifted_at_once();
+  const Diagram expected = octree_diagram(uniform, octree_only);
+  Octree_statistics statistics;
+  Octree_options budgeted{1, &statistics};
+  budgeted.never_lifted_at_once();
+  budgeted.seed_candidate_budget = 1000;
+  check_same(octree_diagram(uniform, budgeted), expected);
+  CHECK(statistics.lifted_seed_candidates);
+  limit.stop();
+}
+
+// The seed candidates per active site of inputs that the octree suits: far below the budget's 128.
+TEST_CASE("ordinary inputs stay far below the seed candidates' budget") {
+  for (const char* name : {"uniform", "lattice", "coplanar", "collinear", "nested", "tangent", "mixed-sign",
+                           "duplicates", "cospherical", "lattice-noise", "far-vertices", "shells"}) {
+    CAPTURE(name);
+    const std::vector<Site> sites = generate_sites(site_family_from_name(name), 2000, 7);
+    Octree_statistics statistics;
+    Octree_options automatic{1, &statistics};
+    const Diagram diagram = octree_diagram(sites, automatic);
+    const std::size_t active = sites.size() - diagram.hidden.size();
+    CAPTURE(statistics.seed_candidates);
+    CAPTURE(active);
+    CHECK_FALSE(statistics.lifted_seed_candidates);
+    if (!statistics.lifted_fallback) CHECK(statistics.seed_candidates <= 64 * active);
+  }
+}
+
 // Small inputs (octree_diagram.h, step 5): at most lifted_at_most_sites active sites go to the lifted
 // triangulation at once, with the octree's output; not with regions, nor on the floating path.
 TEST_CASE("small inputs go to the lifted triangulation at once") {
@@ -235,6 +304,7 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
     const std::vector<Site> sites = generate_sites(Site_family::uniform, n, 5);
     Octree_options octree_only;
     octree_only.never_lifted_at_once();
+    octree_only.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
     Octree_statistics octree_statistics;
     octree_only.statistics = &octree_statistics;
     const Diagram octree = octree_diagram(sites, octree_only);
@@ -378,6 +448,7 @@ TEST_CASE("deep inputs go to the lifted triangulation at once") {
     Input_time_limit limit(time_limit(), name);
     Octree_options octree_only;
     octree_only.never_lifted_at_once();
+    octree_only.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
     Octree_statistics octree_statistics;
     octree_only.statistics = &octree_statistics;
     const Diagram octree = octree_diagram(sites, octree_only);
