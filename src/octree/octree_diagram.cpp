@@ -145,7 +145,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const std::size_t box_limit = options.regions != nullptr                 ? std::numeric_limits<std::size_t>::max()
                                 : small_input || one_weight || deep_input ? 0
                                                                           : budget_boxes;
-  Work_budget budget(box_limit);
+  Work_budget box_budget(box_limit);
   Work_budget seed_budget(options.regions != nullptr ? std::numeric_limits<std::size_t>::max()
                                                      : options.seed_candidate_budget.value_or(
                                                            kSeedCandidatesPerSiteBeforeLifted * active.size() +
@@ -178,7 +178,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       statistics.escaping_sites = escaping.size();
 
       tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation,
-                                                                         &budget);
+                                                                         &box_budget);
       std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
       if (options.regions != nullptr) {
         for (Site_index s : escaping) escapes[s] = true;
@@ -254,7 +254,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     // Step 5: what the refinement found goes, and the vertices come from the lifted triangulation.
     lists.clear();
     statistics = Octree_statistics{};
-    statistics.boxes = budget.spent();
+    statistics.boxes = box_budget.spent();
     statistics.lifted_fallback = true;
     statistics.lifted_small_input = small_input;
     statistics.lifted_one_weight = one_weight;
