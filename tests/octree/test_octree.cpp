@@ -302,11 +302,9 @@ TEST_CASE("small inputs go to the lifted triangulation at once") {
   for (const std::size_t n : {std::size_t{20}, limit, limit + 1, limit + 150}) {
     CAPTURE(n);
     const std::vector<Site> sites = generate_sites(Site_family::uniform, n, 5);
-    Octree_options octree_only;
-    octree_only.never_lifted_at_once();
-    octree_only.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
     Octree_statistics octree_statistics;
-    octree_only.statistics = &octree_statistics;
+    Octree_options octree_only{1, &octree_statistics};
+    octree_only.octree_alone();
     const Diagram octree = octree_diagram(sites, octree_only);
     const std::size_t active = sites.size() - octree.hidden.size();
     CHECK_FALSE(octree_statistics.lifted_fallback);
@@ -446,11 +444,9 @@ TEST_CASE("deep inputs go to the lifted triangulation at once") {
   for (const auto& [name, sites] : inputs) {
     CAPTURE(name);
     Input_time_limit limit(time_limit(), name);
-    Octree_options octree_only;
-    octree_only.never_lifted_at_once();
-    octree_only.seed_candidate_budget = std::numeric_limits<std::size_t>::max();
     Octree_statistics octree_statistics;
-    octree_only.statistics = &octree_statistics;
+    Octree_options octree_only{1, &octree_statistics};
+    octree_only.octree_alone();
     const Diagram octree = octree_diagram(sites, octree_only);
     validate_diagram(octree, sites);
     REQUIRE(sites.size() - octree.hidden.size() > Octree_options{}.lifted_at_most_sites);
