@@ -1,6 +1,7 @@
 #include "diagram/diagram.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "diagram/cancellable_steps.h"
 #include "predicates/kernels.h"
@@ -10,9 +11,11 @@ namespace apollonius {
 namespace {
 
 // A vertex's place in the sort, compared without reaching the vertex for all but equal heads: every tie set
-// has four or more sites, so `head` starts the lexicographic order of the tie sets.
+// has four or more sites, so its first four (in `head`, two to a word, the first high) start the
+// lexicographic order of the tie sets.
+static_assert(sizeof(Site_index) == 4, "two sites to a 64-bit word");
 struct Sort_key {
-  std::array<Site_index, 4> head;  // the tie set's first four sites
+  std::array<std::uint64_t, 2> head;
   std::size_t tie_size;
   std::size_t position;  // where the vertex lies
 };
@@ -50,12 +53,14 @@ Diagram assemble_diagram(std::size_t site_count, std::vector<Hidden_site> hidden
     if (k % 1024 == 0) throw_if_cancelled(cancellation);
     Diagram_vertex& v = vertices[k];
     if (!v.is_rounded()) v.rounded = Kernel::printed_coordinates(v.vertex);
-    keys[k] = {{v.tie_set[0], v.tie_set[1], v.tie_set[2], v.tie_set[3]}, v.tie_set.size(), k};
+    const auto pair = [&](int i) { return std::uint64_t{v.tie_set[i]} << 32 | v.tie_set[i + 1]; };
+    keys[k] = {{pair(0), pair(2)}, v.tie_set.size(), k};
   }
   // docs/contract.md orders lines by tie set (lexicographic, a prefix first), then by printed values; equal
   // printed values fall back to the exact order.
   cancellable_sort(keys.begin(), keys.end(), cancellation, [&](const Sort_key& a, const Sort_key& b) {
-    if (a.head != b.head) return a.head < b.head;
+    if (a.head[0] != b.head[0]) return a.head[0] < b.head[0];
+    if (a.head[1] != b.head[1]) return a.head[1] < b.head[1];
     const Diagram_vertex &u = vertices[a.position], &v = vertices[b.position];
     if (a.tie_size > 4 || b.tie_size > 4) {
       const auto [p, q] = std::mismatch(u.tie_set.begin() + 4, u.tie_set.end(), v.tie_set.begin() + 4, v.tie_set.end());

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 
+#include "diagram/site_tree.h"
 #include "diagram/threads.h"
 #include "predicates/kernels.h"
 #include "predicates/rounding_guard.h"
@@ -18,18 +19,12 @@ namespace apollonius {
 
 namespace {
 
-// A kd-tree of the centres for the search of the sites that can hide a given one: ball i lies in ball j
-// only if |c_i - c_j| <= w_j - w_i. Each node keeps the exact bounding box of its centres and its largest
-// weight, and a search skips a node when intervals show that this largest weight minus w_i is below the
-// distance from c_i to the box. Invariant: nodes_[k]'s sites are order_[begin, end), its children (if any)
-// are nodes_[k + 1] and nodes_[right], splitting that range at its median on the box's longest axis.
+// The search of the sites that can hide a given one: ball i lies in ball j only if |c_i - c_j| <= w_j - w_i.
+// A search skips a node of the tree when intervals show that its largest weight minus w_i is below the
+// distance from c_i to its box.
 class Hider_tree {
  public:
-  explicit Hider_tree(const std::vector<Site>& sites) : sites_(sites), order_(sites.size()) {
-    for (Site_index i = 0; i < sites.size(); ++i) order_[i] = i;
-    nodes_.reserve(2 * sites.size() / kLeafSize + 1);
-    build(0, sites.size());
-  }
+  explicit Hider_tree(const std::vector<Site>& sites) : sites_(sites), tree_(sites, all_indices(sites.size())) {}
 
   // Sets `hiders` to every site j != i that can hide site i, and some that cannot; `stack` is scratch.
   void possible_hiders(Site_index i, std::vector<Site_index>& hiders, std::vector<std::size_t>& stack) const {
@@ -47,15 +42,17 @@ class Hider_tree {
       }
       return !(distance_squared.inf() > (weight_gap * weight_gap).sup());
     };
+    const std::vector<Site_tree::Node>& nodes = tree_.nodes();
+    const std::vector<Site_index>& order = tree_.order();
     stack.assign(1, 0);
     while (!stack.empty()) {
       const std::size_t k = stack.back();
       stack.pop_back();
-      const Node& node = nodes_[k];
+      const Site_tree::Node& node = nodes[k];
       if (!may_hide(node.lo, node.hi, node.heaviest)) continue;
       if (node.right == 0) {
         for (std::size_t m = node.begin; m < node.end; ++m) {
-          const Site_index j = order_[m];
+          const Site_index j = order[m];
           const std::array<double, 3> c{sites_[j].x, sites_[j].y, sites_[j].z};
           if (j != i && may_hide(c, c, sites_[j].w)) hiders.push_back(j);
         }
@@ -67,47 +64,15 @@ class Hider_tree {
   }
 
  private:
-  static constexpr std::size_t kLeafSize = 8;
-
-  struct Node {
-    std::size_t begin, end;
-    std::size_t right = 0;  // 0: a leaf
-    std::array<double, 3> lo, hi;
-    double heaviest;
-  };
-
   static double coordinate(const Site& s, int axis) { return axis == 0 ? s.x : axis == 1 ? s.y : s.z; }
-
-  // Depth O(log n): every split halves the range.
-  void build(std::size_t begin, std::size_t end) {
-    const std::size_t k = nodes_.size();
-    nodes_.push_back(Node{begin, end, 0, {}, {}, -std::numeric_limits<double>::infinity()});
-    Node node = nodes_[k];
-    node.lo.fill(std::numeric_limits<double>::infinity());
-    node.hi.fill(-std::numeric_limits<double>::infinity());
-    for (std::size_t m = begin; m < end; ++m) {
-      const Site& s = sites_[order_[m]];
-      for (int a = 0; a < 3; ++a) node.lo[a] = std::min(node.lo[a], coordinate(s, a)), node.hi[a] = std::max(node.hi[a], coordinate(s, a));
-      node.heaviest = std::max(node.heaviest, s.w);
-    }
-    if (end - begin > kLeafSize) {
-      int axis = 0;  // the longest, compared by halves so that it stays finite
-      for (int a = 1; a < 3; ++a)
-        if (node.hi[a] / 2 - node.lo[a] / 2 > node.hi[axis] / 2 - node.lo[axis] / 2) axis = a;
-      const std::size_t middle = begin + (end - begin) / 2;
-      std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end, [&](Site_index a, Site_index b) {
-        return coordinate(sites_[a], axis) < coordinate(sites_[b], axis) || (coordinate(sites_[a], axis) == coordinate(sites_[b], axis) && a < b);
-      });
-      build(begin, middle);
-      node.right = nodes_.size();
-      build(middle, end);
-    }
-    nodes_[k] = node;
+  static std::vector<Site_index> all_indices(std::size_t n) {
+    std::vector<Site_index> indices(n);
+    for (Site_index i = 0; i < n; ++i) indices[i] = i;
+    return indices;
   }
 
   const std::vector<Site>& sites_;
-  std::vector<Site_index> order_;
-  std::vector<Node> nodes_;
+  Site_tree tree_;
 };
 
 }  // namespace

@@ -7,8 +7,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <queue>
 
+#include "diagram/site_tree.h"
 #include "predicates/centre_expansion.h"
 
 namespace apollonius {
@@ -58,61 +58,23 @@ struct Box_graph {
   }
 };
 
-// Pass 1, the paper's distance propagation: sites spread from their home boxes in Dijkstra order of
-// their distance at the box centres, and each box keeps the first kWitnesses that reach it (usually the
-// nearest; which sites they are matters for speed only).
+// Pass 1: each box's witnesses are the kWitnesses sites of least d at its centre, in floating point (which
+// sites they are matters for speed only). The paper propagates distances from the sites' home boxes in
+// Dijkstra order, which finds them only approximately and one event at a time; a search per box in a tree
+// of the sites finds them outright, each box on its own, in parallel and the same for every thread count.
 void find_witnesses(Box_graph& graph, const std::vector<Site>& sites, const std::vector<Site_index>& active,
                     const Seed_partition& partition, const Cancellation* cancellation) {
-  struct Event {
-    double key;  // d of the site at the box centre
-    Site_index site;
-    std::size_t box;
-    bool operator>(const Event& e) const { return key > e.key; }
-  };
-  std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events;
-  // Per box, the kWitnesses least events offered to it, by distinct sites: they pop before any larger
-  // event, which would then find the box full (or its site a witness) and be dropped, so it is not offered.
-  // Invariant: key ascending, sites distinct.
-  struct Offered {
-    std::array<double, kWitnesses> key;
-    std::array<Site_index, kWitnesses> site;
-    std::size_t count = 0;
-  };
-  std::vector<Offered> offered(graph.box.size());
-  const auto offer = [&](Site_index s, std::size_t b) {
-    if (graph.witnesses[b].size() == kWitnesses) return;  // its witnesses are final: the event would be dropped
-    const double* c = graph.frame[b].centre.data();
-    const double dx = c[0] - sites[s].x, dy = c[1] - sites[s].y, dz = c[2] - sites[s].z;
-    const double key = std::sqrt(dx * dx + dy * dy + dz * dz) - sites[s].w;  // inf only delays the event
-    Offered& o = offered[b];
-    if (!std::isnan(key)) {  // a NaN key is not ordered: always offered, it only delays its event
-      if (std::find(o.site.begin(), o.site.begin() + o.count, s) != o.site.begin() + o.count) return;  // same key
-      if (o.count == kWitnesses && !(key < o.key.back())) return;
-      std::size_t at = std::min(o.count, kWitnesses - 1);
-      for (; at > 0 && key < o.key[at - 1]; --at) o.key[at] = o.key[at - 1], o.site[at] = o.site[at - 1];
-      o.key[at] = key, o.site[at] = s, o.count = std::min(o.count + 1, kWitnesses);
-    }
-    events.push({key, s, b});
-  };
-  for (Site_index s : active) offer(s, partition.home(sites[s]));
-  for (std::size_t popped = 0; !events.empty(); ++popped) {
-    if (popped % 4096 == 0) throw_if_cancelled(cancellation);
-    const Event e = events.top();
-    events.pop();
-    auto& held = graph.witnesses[e.box];
-    if (held.size() == kWitnesses ||
-        std::any_of(held.begin(), held.end(), [&](const auto& w) { return w.first == e.site; }))
-      continue;
-    held.emplace_back(e.site, Witness_expansion{});  // expanded below, in parallel
-    for (std::size_t k = graph.neighbour_start[e.box]; k < graph.neighbour_start[e.box + 1]; ++k)
-      offer(e.site, graph.neighbours[k]);
-  }
-  // Only the order of the sites decides which become witnesses, so their expansions wait until then.
+  const Site_tree tree(sites, active);
   tbb::parallel_for(std::size_t{0}, graph.box.size(), [&](std::size_t b) {
     if (b % 4096 == 0) throw_if_cancelled(cancellation);
-    for (auto& [w, at_w] : graph.witnesses[b]) {
-      at_w = expand_witness(expand_at_centre(sites[w], graph.frame[b]));
-      add_corners(at_w, sites[w], graph.frame[b]);
+    if (!partition.is_box(b)) return;
+    std::array<Site_index, kWitnesses> nearest;
+    const std::size_t count = tree.nearest(graph.frame[b].centre, kWitnesses, nearest.data());
+    auto& held = graph.witnesses[b];
+    held.reserve(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      held.emplace_back(nearest[k], expand_witness(expand_at_centre(sites[nearest[k]], graph.frame[b])));
+      add_corners(held.back().second, sites[nearest[k]], graph.frame[b]);
     }
   });
 }

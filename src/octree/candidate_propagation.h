@@ -1,7 +1,7 @@
 // Step 2 of the octree (paper section 5.2.1): the candidate sites of every seed box, in two passes.
-//  1. The paper's distance propagation: sites spread from their home boxes to face neighbours in
-//     Dijkstra order of their weighted distance at the box centres, and each box keeps the first four
-//     that reach it as its witnesses (usually its nearest sites; which ones matters for speed only).
+//  1. Each box keeps as its witnesses the four sites of least weighted distance at its centre, found by a
+//     search in a tree of the sites (site_tree.h) where the paper propagates distances from the sites'
+//     home boxes (which sites they are matters for speed only).
 //  2. Each site floods from its home box through face neighbours, entering every box where no witness
 //     certainly dominates it (centre_expansion.h); only a box it entered passes it on. The floods are
 //     independent, so they run in parallel; the lists are sorted, so every thread count gives the same.

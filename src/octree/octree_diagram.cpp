@@ -47,9 +47,9 @@ constexpr std::size_t kReservedVerticesPerSite = 8;
 constexpr std::size_t kBoxesPerSiteBeforeLifted = 512;
 constexpr std::size_t kBoxesBeforeLifted = 16384;
 // The propagation's budget: seed candidates, (seed box, site) pairs. The benchmark inputs and the generated
-// families that the octree suits enter 5 to 55 per site (docs/benchmarks.md, "A budget of seed
-// candidates"); one ball 10^6 away from 10,000 others made 6,000 per site, and their refinement took 35 s
-// where the triangulation takes 3.
+// families enter 5 to 55 per site, a cluster beside one ball 10^6 to 10^12 away 9 to 34 (docs/benchmarks.md,
+// "Witnesses by a search for the nearest sites"); with the witnesses of the paper's distance propagation,
+// one ball 10^6 away from 10,000 others made 6,000 per site, and their refinement took 35 s.
 constexpr std::size_t kSeedCandidatesPerSiteBeforeLifted = 128;
 constexpr std::size_t kSeedCandidatesBeforeLifted = 16384;
 

@@ -3,8 +3,8 @@
 //  0. Sites whose extent is far from 1 are first scaled by a power of two (scale_normalization.h).
 //  1. Seed boxes (seed_partition.h): cubes of side 2^e over the box G of the site centres, and graded
 //     shells of doubling cubes around G out to the root box R, 32 times G's size.
-//  2. Candidates (candidate_propagation.h): the paper's distance propagation finds a few near sites of
-//     each seed box; every site then floods through face neighbours into the boxes where none of those
+//  2. Candidates (candidate_propagation.h): the four nearest sites at each seed box's centre are its
+//     witnesses; every site then floods through face neighbours into the boxes where none of those
 //     certainly dominates it.
 //  3. Refinement (box_refinement.h): each seed box and its candidates are split into 8 until at most six
 //     candidates remain (or refining stops helping, on degenerate input); each leaf decides the
@@ -18,8 +18,8 @@
 //     circle; the triangulation of their lifts has 9,583 3-faces. On the benchmark inputs the octree uses
 //     8 to 60 boxes per site and never reaches the budget; there it is about twice as fast as the
 //     triangulation at thousands of sites. So does the propagation, past a budget of seed candidates (128
-//     per active site, plus 16,384): seed boxes far smaller than the cells they cut, as around a cluster
-//     beside one far ball, each hold thousands of candidates that every box below them tests again.
+//     per active site, plus 16,384), a bound on the candidates that every box below a seed box tests
+//     again; with each seed box's nearest sites as witnesses, no input measured comes near it.
 //     Cost: at most the budgets' boxes and seed candidates plus the triangulation,
 //     O(n log n) expected for n lifts in general position. Both decide every vertex exactly, so the
 //     output is the same whichever ran, for every thread count.
