@@ -16,6 +16,7 @@ namespace {
 
 // Each box keeps this many witnesses: sites of least distance at its centre, found by pass 1.
 constexpr std::size_t kWitnesses = 4;
+static_assert(kWitnesses <= Site_tree::kMostNearest);
 
 // The boxes with their centres, witnesses and face neighbours (compressed rows).
 // Invariant: witnesses[b] holds distinct sites by ascending d at the centre.
