@@ -11,19 +11,23 @@ namespace {
 
 double coordinate(const Site& s, int axis) { return axis == 0 ? s.x : axis == 1 ? s.y : s.z; }
 
+// |x_a - y_a| as the larger minus the smaller, so that the two formulas below round alike in any mode.
+double separation(double x, double y) { return x < y ? y - x : x - y; }
+
 // d at x as the searches compute it (a NaN is infinitely far).
 double floating_distance(const std::array<double, 3>& x, const Site& s) {
-  const double dx = x[0] - s.x, dy = x[1] - s.y, dz = x[2] - s.z;
+  const double dx = separation(x[0], s.x), dy = separation(x[1], s.y), dz = separation(x[2], s.z);
   const double d = std::sqrt(dx * dx + dy * dy + dz * dz) - s.w;
   return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
 }
 
-// The same formula on the gaps to the node's box and its largest weight. Rounding to nearest is monotone in
-// every operation, and each gap is at most the site's |x_a - c_a|, so this is at most floating_distance of
-// each site of the node.
+// The same formula on the gaps to the node's box and its largest weight. Each operation rounds monotonically
+// (in any rounding mode), and each gap is at most the site's separation on its axis, so this is at most
+// floating_distance of each site of the node.
 double floating_bound(const std::array<double, 3>& x, const Site_tree::Node& node) {
   std::array<double, 3> gap;
-  for (int a = 0; a < 3; ++a) gap[a] = x[a] < node.lo[a] ? node.lo[a] - x[a] : x[a] > node.hi[a] ? x[a] - node.hi[a] : 0;
+  for (int a = 0; a < 3; ++a)
+    gap[a] = x[a] < node.lo[a] ? separation(x[a], node.lo[a]) : x[a] > node.hi[a] ? separation(x[a], node.hi[a]) : 0;
   const double bound = std::sqrt(gap[0] * gap[0] + gap[1] * gap[1] + gap[2] * gap[2]) - node.heaviest;
   return std::isnan(bound) ? -std::numeric_limits<double>::infinity() : bound;
 }
