@@ -13,6 +13,9 @@ struct Site {
   }
 };
 
+// The centre's coordinate on axis 0 (x), 1 (y) or 2 (z).
+inline double centre_coordinate(const Site& s, int axis) { return axis == 0 ? s.x : axis == 1 ? s.y : s.z; }
+
 // The site scaled by 2^k: exact unless a value leaves the normal range. The diagram scales with it.
 inline Site scaled_by_power_of_two(const Site& s, int k) {
   return {std::ldexp(s.x, k), std::ldexp(s.y, k), std::ldexp(s.z, k), std::ldexp(s.w, k)};

@@ -112,8 +112,8 @@ Command_run add_vertices_command(CLI::App& app) {
                   "through far more binades than the sites' spacing needs; else octree), octree (paper\n"
                   "section 5.2; it turns to lifted past 512 boxes or 128 seed candidates per site), lifted\n"
                   "(the 3-faces of the lifted regular triangulation in R^4; for one radius, the Delaunay\n"
-                  "triangulation of the centres), or\n"
-                  "brute (the O(n^5) reference); all but brute give the same bytes")
+                  "triangulation of the centres), or brute (the O(n^5) reference); all but brute\n"
+                  "give the same bytes")
       ->check(CLI::IsMember([] {
         std::vector<std::string> names(std::begin(kVertexAlgorithms), std::end(kVertexAlgorithms));
         names.push_back("brute");

@@ -36,7 +36,7 @@ class Hider_tree {
       if (weight_gap.sup() < 0) return false;
       Interval distance_squared(0);  // a lower bound of |c_i - c|^2 over the box
       for (int a = 0; a < 3; ++a) {
-        const Interval c(coordinate(s, a));
+        const Interval c(centre_coordinate(s, a));
         const double gap = std::max({0.0, (Interval(lo[a]) - c).inf(), (c - Interval(hi[a])).inf()});
         distance_squared += Interval(gap, gap) * Interval(gap, gap);  // gap may be infinite
       }
@@ -64,7 +64,6 @@ class Hider_tree {
   }
 
  private:
-  static double coordinate(const Site& s, int axis) { return axis == 0 ? s.x : axis == 1 ? s.y : s.z; }
   static std::vector<Site_index> all_indices(std::size_t n) {
     std::vector<Site_index> indices(n);
     for (Site_index i = 0; i < n; ++i) indices[i] = i;

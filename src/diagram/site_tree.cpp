@@ -9,8 +9,6 @@ namespace apollonius {
 
 namespace {
 
-double coordinate(const Site& s, int axis) { return axis == 0 ? s.x : axis == 1 ? s.y : s.z; }
-
 // |x_a - y_a| as the larger minus the smaller, so that the two formulas below round alike in any mode.
 double separation(double x, double y) { return x < y ? y - x : x - y; }
 
@@ -49,7 +47,10 @@ void Site_tree::build(std::size_t begin, std::size_t end) {
   node.hi.fill(-std::numeric_limits<double>::infinity());
   for (std::size_t m = begin; m < end; ++m) {
     const Site& s = sites_[order_[m]];
-    for (int a = 0; a < 3; ++a) node.lo[a] = std::min(node.lo[a], coordinate(s, a)), node.hi[a] = std::max(node.hi[a], coordinate(s, a));
+    for (int a = 0; a < 3; ++a) {
+      node.lo[a] = std::min(node.lo[a], centre_coordinate(s, a));
+      node.hi[a] = std::max(node.hi[a], centre_coordinate(s, a));
+    }
     node.heaviest = std::max(node.heaviest, s.w);
   }
   if (end - begin > kLeafSize) {
@@ -59,7 +60,7 @@ void Site_tree::build(std::size_t begin, std::size_t end) {
     const std::size_t middle = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin), order_.begin() + static_cast<std::ptrdiff_t>(middle),
                      order_.begin() + static_cast<std::ptrdiff_t>(end), [&](Site_index a, Site_index b) {
-                       const double ca = coordinate(sites_[a], axis), cb = coordinate(sites_[b], axis);
+                       const double ca = centre_coordinate(sites_[a], axis), cb = centre_coordinate(sites_[b], axis);
                        return ca < cb || (ca == cb && a < b);
                      });
     build(begin, middle);

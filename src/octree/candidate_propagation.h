@@ -23,8 +23,8 @@ namespace apollonius {
 
 // candidates[id] for every box identifier of the partition (empty for unused identifiers). `slack`
 // multiplies the rounding-error slack of the filters: 1 certified, 0 on the floating path (kernels.h).
-// Checks cancellation (cancellation.h) every 4096 boxes of the graph, every 4096 events of pass 1, and
-// before each site's flood. Each (box, site) pair a flood enters is spent from `budget` when given, after
+// Checks cancellation (cancellation.h) every 4096 boxes of the graph and of pass 1, and before each site's
+// flood. Each (box, site) pair a flood enters is spent from `budget` when given, after
 // the site's flood (work_budget.h: throws Work_budget_exceeded past it).
 std::vector<std::vector<Site_index>> propagate_candidates(const std::vector<Site>& sites,
                                                           const std::vector<Site_index>& active,

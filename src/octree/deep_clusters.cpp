@@ -21,7 +21,7 @@ std::uint64_t spread_bits(std::uint64_t x) {
 }
 
 // Half of the centre's coordinate on an axis: no extent of halves overflows (sites near +-1.7e308).
-double half_coordinate(const Site& s, int axis) { return 0.5 * (axis == 0 ? s.x : axis == 1 ? s.y : s.z); }
+double half_coordinate(const Site& s, int axis) { return 0.5 * centre_coordinate(s, axis); }
 
 }  // namespace
 

@@ -50,15 +50,14 @@ TEST_CASE("Site_tree's nearest sites equal a scan of every site, on every family
       for (int a = 0; a < 3; ++a) lo[a] = std::numeric_limits<double>::infinity(), hi[a] = -lo[a];
       for (const Site& s : sites)
         for (int a = 0; a < 3; ++a) {
-          const double c = a == 0 ? s.x : a == 1 ? s.y : s.z;
-          lo[a] = std::min(lo[a], c), hi[a] = std::max(hi[a], c);
+          lo[a] = std::min(lo[a], centre_coordinate(s, a)), hi[a] = std::max(hi[a], centre_coordinate(s, a));
         }
       for (int q = 0; q < 60; ++q) {
         std::array<double, 3> x{};
         for (int a = 0; a < 3; ++a) {
           const double t = std::uniform_real_distribution<double>(-0.5, 1.5)(random);
           x[a] = q % 10 == 0 ? (q % 20 == 0 ? 1e6 : -1e3) * (hi[a] - lo[a] + 1)  // far outside
-                 : q % 7 == 0 && !sites.empty() ? (a == 0 ? sites[q % sites.size()].x : a == 1 ? sites[q % sites.size()].y : sites[q % sites.size()].z)
+                 : q % 7 == 0 && !sites.empty() ? centre_coordinate(sites[q % sites.size()], a)  // at a centre
                                                  : lo[a] / 2 + hi[a] / 2 + t * (hi[a] / 2 - lo[a] / 2);
           if (!std::isfinite(x[a])) x[a] = lo[a];
         }
@@ -97,8 +96,10 @@ TEST_CASE("Site_tree: no sites, fewer sites than asked, and its nodes bound thei
     REQUIRE(node.begin < node.end);
     for (std::size_t m = node.begin; m < node.end; ++m) {
       const Site& s = sites[tree.order()[m]];
-      const std::array<double, 3> c{s.x, s.y, s.z};
-      for (int a = 0; a < 3; ++a) CHECK((node.lo[a] <= c[a] && c[a] <= node.hi[a]));
+      for (int a = 0; a < 3; ++a) {
+        const double c = centre_coordinate(s, a);
+        CHECK((node.lo[a] <= c && c <= node.hi[a]));
+      }
       CHECK(s.w <= node.heaviest);
     }
     if (node.right != 0) {
