@@ -139,31 +139,53 @@ std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<
   return points;
 }
 
+namespace {
+
+// The canonical point's enclosure from a geometry in NT, Interval or Wide_interval, in that geometry's frame
+// (the cut <X, y> = 0 by a direction y of L is the same set in every frame: trisector.h).
+template <class NT>
+std::optional<Vector4<NT>> canonical_point_enclosure(const Trisector_geometry<NT>& g) {
+  using CGAL::sqrt;
+  const bool closed = g.kind == Trisector_kind::ellipse;
+  const Vector4<NT>& y = closed ? g.e2 : g.monotone;  // the cut <X, y> = 0 (arc_witness.cpp)
+  const std::optional<Cut_line<NT>> line = cut_line(g, Vector4<NT>{y[0], y[1], y[2], -y[3]}, NT(0));
+  if (!line) return std::nullopt;
+  std::vector<Vector4<NT>> points;
+  if (certain_sign(line->A) == Sign::ZERO) {
+    const NT s = -line->C / (NT(2) * line->B);
+    points.push_back(combination(NT(1), line->base, s, line->direction));
+  } else {
+    if (certain_sign(line->B * line->B - line->A * line->C) != Sign::POSITIVE) return std::nullopt;
+    const NT root = sqrt(line->B * line->B - line->A * line->C);
+    for (const int sigma : {-1, 1})
+      points.push_back(combination(NT(1), line->base, (-line->B + NT(sigma) * root) / line->A, line->direction));
+  }
+  std::optional<Vector4<NT>> chosen;
+  for (const Vector4<NT>& x : points) {
+    if (certain_sign(x[3]) != Sign::POSITIVE) continue;  // the other branch
+    if (closed && certain_sign(lorentz_product(x, g.e1)) != Sign::POSITIVE) continue;  // theta = pi
+    if (chosen) return std::nullopt;
+    chosen = x;
+  }
+  return chosen;
+}
+
+}  // namespace
+
 std::optional<Vector4<Interval>> enclosed_canonical_point(const Trisector& t) {
   try {
-    const Trisector_geometry<Interval>& g = t.geometry<Interval>();
-    const bool closed = g.kind == Trisector_kind::ellipse;
-    const Vector4<Interval>& y = closed ? g.e2 : g.monotone;  // the cut <X, y> = 0 (arc_witness.cpp)
-    const std::optional<Cut_line<Interval>> line = cut_line(g, Vector4<Interval>{y[0], y[1], y[2], -y[3]}, Interval(0));
-    if (!line) return std::nullopt;
-    std::vector<Vector4<Interval>> points;
-    if (certain_sign(line->A) == Sign::ZERO) {
-      const Interval s = -line->C / (Interval(2) * line->B);
-      points.push_back(combination(Interval(1), line->base, s, line->direction));
-    } else {
-      if (certain_sign(line->B * line->B - line->A * line->C) != Sign::POSITIVE) return std::nullopt;
-      const Interval root = CGAL::sqrt(line->B * line->B - line->A * line->C);
-      for (const int sigma : {-1, 1})
-        points.push_back(combination(Interval(1), line->base, (-line->B + Interval(sigma) * root) / line->A, line->direction));
-    }
-    std::optional<Vector4<Interval>> chosen;
-    for (const Vector4<Interval>& x : points) {
-      if (certain_sign(x[3]) != Sign::POSITIVE) continue;  // the other branch
-      if (closed && certain_sign(lorentz_product(x, g.e1)) != Sign::POSITIVE) continue;  // theta = pi
-      if (chosen) return std::nullopt;
-      chosen = x;
-    }
-    return chosen;
+    return canonical_point_enclosure(t.geometry<Interval>());
+  } catch (const Uncertain_sign&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<Wide_canonical_point> wide_enclosed_canonical_point(const Trisector& t) {
+  try {
+    const Wide_trisector_geometry& g = t.wide_geometry();
+    if (const std::optional<Vector4<Wide_interval>> X = canonical_point_enclosure(g.geometry))
+      return Wide_canonical_point{*X, g.origin};
+    return std::nullopt;
   } catch (const Uncertain_sign&) {
     return std::nullopt;
   }

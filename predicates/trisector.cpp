@@ -1,5 +1,6 @@
 #include "predicates/trisector.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "predicates/rounding_guard.h"
@@ -155,6 +156,7 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
 }
 
 template Trisector_geometry<Interval> trisector_geometry<Interval>(const std::array<Site, 3>&);
+template Trisector_geometry<Wide_interval> trisector_geometry<Wide_interval>(const std::array<Site, 3>&);
 template Trisector_geometry<Rational> trisector_geometry<Rational>(const std::array<Site, 3>&);
 
 Root_number<Rational> lorentz_value(const Field_point<Rational>& p, const Vector4<Rational>& y) {
@@ -189,6 +191,29 @@ template <>
 const Trisector_geometry<Interval>& Trisector::geometry<Interval>() const {
   if (!interval_) throw Uncertain_sign();
   return *interval_;
+}
+
+// Only asked for where the intervals did not decide: sites over many binades (deep inputs), whose exact
+// geometry has thousands of bits.
+const Wide_trisector_geometry& Trisector::wide_geometry() const {
+  const auto compute = [&]() -> std::optional<Wide_trisector_geometry> {
+    int origin = 0;
+    double closest = INFINITY;
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+        if (const double d = coarse_distance(sites_[i], sites_[j]); d < closest) closest = d, origin = i;
+    std::array<Site, 3> from_origin = sites_;
+    std::swap(from_origin[0], from_origin[origin]);  // the other two in any order: the same plane L
+    Rounding_guard guard;
+    try {
+      return Wide_trisector_geometry{trisector_geometry<Wide_interval>(from_origin), origin};
+    } catch (const Uncertain_sign&) {
+      return std::nullopt;
+    }
+  };
+  const std::optional<Wide_trisector_geometry>& g = wide_.get_or_compute(compute);
+  if (!g) throw Uncertain_sign();
+  return *g;
 }
 
 template <>

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -26,6 +27,16 @@ struct Classify_trisector_predicate {
   static std::pair<Trisector_kind, Curve_shape> evaluate(const Trisector& t) {
     const Trisector_geometry<NT>& g = t.geometry<NT>();
     return {g.kind, g.shape};
+  }
+
+  // The kind and shape are the same in every frame (trisector.h).
+  static std::optional<std::pair<Trisector_kind, Curve_shape>> wide_stage(const Trisector& t) {
+    try {
+      const Trisector_geometry<Wide_interval>& g = t.wide_geometry().geometry;
+      return std::pair{g.kind, g.shape};
+    } catch (const Uncertain_sign&) {
+      return std::nullopt;
+    }
   }
 };
 

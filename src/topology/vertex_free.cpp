@@ -14,6 +14,7 @@
 #include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
 #include "diagram/flat_lists.h"
+#include "octree/lifted_triangulation.h"
 #include "predicates/arc_witness.h"
 #include "predicates/rational_between.h"
 #include "predicates/rounding_guard.h"
@@ -95,20 +96,22 @@ std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& bas
   return tie;
 }
 
-// The filter of the curve's test: decides from an interval enclosure of its canonical point W (which holds
-// the exact W) when the intervals are certain: nothing = no edge; a tie set = the triple alone. Else
-// undecided (the exact test follows).
+// The filter of the curve's test: decides from an enclosure X of its canonical point W (which holds the exact
+// W), relative to the trisector's site o, when the enclosure's signs are certain: nothing = no edge; a tie
+// set = the triple alone. Else undecided (the exact test follows). NT: Interval, or Wide_interval where the
+// intervals did not decide (a deep input), whose exact W has thousands of bits.
 enum class Filtered_outcome { no_edge, edge, undecided };
 
-Filtered_outcome filtered_curve_test(const Trisector& t, const std::vector<Site>& sites, const Octree_regions& regions,
+Interval in_double_range(const Interval& x) { return x; }
+Interval in_double_range(const Wide_interval& x) { return x.to_interval(); }  // infinite bounds beyond it
+
+template <class NT>
+Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, const Site& o,
+                                     const std::vector<Site>& sites, const Octree_regions& regions,
                                      const Occurrences& seen) {
-  Rounding_guard guard;
-  const std::optional<Vector4<Interval>> enclosure = enclosed_canonical_point(t);
-  if (!enclosure) return Filtered_outcome::undecided;
-  const Vector4<Interval>& X = *enclosure;
-  const Site& o = t.origin();
-  const Interval half(0.5);
-  const std::array<Interval, 3> v{Interval(o.x) + X[0] * half, Interval(o.y) + X[1] * half, Interval(o.z) + X[2] * half};
+  const NT half(0.5);
+  const std::array<Interval, 3> v{in_double_range(NT(o.x) + X[0] * half), in_double_range(NT(o.y) + X[1] * half),
+                                  in_double_range(NT(o.z) + X[2] * half)};
   const auto inside = [&](const Axis_box& b) {  // certainly inside, certainly not, or unsure
     bool in = true, out = false;
     for (int k = 0; k < 3; ++k) {
@@ -139,10 +142,10 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const std::vector<Site>
   for (Site_index s : *test) {
     if (s == t.indices()[0] || s == t.indices()[1] || s == t.indices()[2]) continue;
     // d_s - r at W (curve_point_conflict): POSITIVE if r + w_s < 0, else the sign of h_s - R_s . X.
-    const Relative_site<Interval> r = relative_site<Interval>(o, sites[s]);
-    const Interval reach = X[3] + Interval(2) * r.row[3];
     Sign c;
     try {
+      const Relative_site<NT> r = relative_site<NT>(o, sites[s]);
+      const NT reach = X[3] + NT(2) * r.row[3];
       if (certain_sign(reach) == Sign::NEGATIVE) {
         c = Sign::POSITIVE;
       } else {
@@ -194,7 +197,7 @@ class Located_witness {
 
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads,
-                                    const Cancellation* cancellation) {
+                                    const Cancellation* cancellation, std::size_t all_triples_up_to) {
   const Items_by_site vertices_of_site = items_by_site(
       sites.size(), diagram.vertices.size(), [&](std::size_t v) -> const auto& { return diagram.vertices[v].tie_set; },
       cancellation);
@@ -217,6 +220,42 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   // determinant is certainly positive (trisector_rows.h, in intervals from the box's pairwise power gaps):
   // such a triple is left out before the occurrences are sorted. On 1j3h 95% of the occurrences go.
   Pairwise_gaps gaps;
+  // The triples of a set of more than all_triples_up_to sites: those whose edges are edges of the set's
+  // lifted triangulation, and those with a site whose lift is no vertex of it (vertex_free.h). Without an
+  // octree (the reference) every triple.
+  const std::size_t largest_with_all_triples =
+      regions.has_octree ? all_triples_up_to : std::numeric_limits<std::size_t>::max();
+  std::vector<Triple> triangulated;
+  const auto triangulated_triples = [&](const auto& set) {
+    triangulated.clear();
+    const Lifted_triangulation lifts =
+        lifted_triangulation(sites, std::vector<Site_index>(set.begin(), set.end()), cancellation);
+    for (const Site_index a : lifts.sites) {
+      const std::vector<Site_index>& around_a = lifts.neighbours_of(a);
+      for (auto b = std::upper_bound(around_a.begin(), around_a.end(), a); b != around_a.end(); ++b) {
+        const std::vector<Site_index>& around_b = lifts.neighbours_of(*b);
+        std::vector<Site_index>::const_iterator c = std::upper_bound(around_b.begin(), around_b.end(), *b);
+        for (auto d = b + 1; d != around_a.end() && c != around_b.end();) {  // common neighbours above b
+          if (*d < *c) ++d;
+          else if (*c < *d) ++c;
+          else triangulated.push_back({a, *b, *d}), ++c, ++d;
+        }
+      }
+    }
+    for (std::size_t u = 0; u < lifts.unplaced.size(); ++u)  // each triple once: by its first unplaced site
+      for (std::size_t i = 0; i < lifts.sites.size(); ++i)
+        for (std::size_t j = i + 1; j < lifts.sites.size(); ++j) {
+          Triple t{lifts.unplaced[u], lifts.sites[i], lifts.sites[j]};
+          if (t[0] == t[1] || t[0] == t[2]) continue;
+          const auto earlier_unplaced = [&](Site_index s) {
+            const auto end = lifts.unplaced.begin() + static_cast<std::ptrdiff_t>(u);
+            return std::binary_search(lifts.unplaced.begin(), end, s);
+          };
+          if (earlier_unplaced(t[1]) || earlier_unplaced(t[2])) continue;
+          std::sort(t.begin(), t.end());
+          triangulated.push_back(t);
+        }
+  };
   const auto note = [&](const auto& set, Box_position box) {
     throw_if_cancelled(cancellation);
     const std::size_t size = set.size();
@@ -226,21 +265,32 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
       return gaps.maybe_closed(i, j, k);
     };
     for (std::size_t i = 0; i < size; ++i)
-      for (std::size_t j = i + 1; j < size; ++j) {
-        const bool both_escape = escapes[set[i]] && escapes[set[j]];
-        if (both_escape) pair_seen.push_back({{set[i], set[j]}, box});
-        for (std::size_t k = j + 1; k < size; ++k)
-          if ((both_escape && escapes[set[k]]) || maybe_closed(i, j, k))
-            triple_seen.push_back({{set[i], set[j], set[k]}, box});
-      }
+      for (std::size_t j = i + 1; j < size; ++j)
+        if (escapes[set[i]] && escapes[set[j]]) pair_seen.push_back({{set[i], set[j]}, box});
+    const auto offer = [&](std::size_t i, std::size_t j, std::size_t k) {
+      if ((escapes[set[i]] && escapes[set[j]] && escapes[set[k]]) || maybe_closed(i, j, k))
+        triple_seen.push_back({{set[i], set[j], set[k]}, box});
+    };
+    if (size <= largest_with_all_triples) {
+      for (std::size_t i = 0; i < size; ++i)
+        for (std::size_t j = i + 1; j < size; ++j)
+          for (std::size_t k = j + 1; k < size; ++k) offer(i, j, k);
+      return;
+    }
+    triangulated_triples(set);
+    const auto position = [&](Site_index s) {
+      return static_cast<std::size_t>(std::lower_bound(set.begin(), set.end(), s) - set.begin());
+    };
+    for (const Triple& t : triangulated) offer(position(t[0]), position(t[1]), position(t[2]));
   };
   // Reserved up front (pairs exactly, triples at most): doubling a vector of tens of millions of occurrences
-  // copies it without a check.
+  // copies it without a check. The triples of a triangulated set are not known before: it grows for them.
   std::size_t pair_count = 0, triple_count = 0;
   const auto count = [&](const auto& set) {
     const std::size_t k = set.size();
     const std::size_t e = std::count_if(set.begin(), set.end(), [&](Site_index s) { return escapes[s]; });
-    pair_count += e * (e - 1) / 2, triple_count += k * (k - 1) * (k - 2) / 6;
+    pair_count += e * (e - 1) / 2;
+    if (k <= largest_with_all_triples) triple_count += k * (k - 1) * (k - 2) / 6;
   };
   for (const Octree_regions::Box& box : regions.boxes) count(box.sites);
   for (const std::vector<Site_index>& set : regions.far_sets) count(set);
@@ -288,7 +338,15 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     Diagram_edge e;
     e.curve = shape;
     e.closed = kind == Trisector_kind::ellipse;
-    const Filtered_outcome filtered = filtered_curve_test(t, sites, regions, seen);
+    Filtered_outcome filtered = Filtered_outcome::undecided;
+    {
+      Rounding_guard guard;
+      if (const std::optional<Vector4<Interval>> X = enclosed_canonical_point(t))
+        filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, seen);
+      if (filtered == Filtered_outcome::undecided)
+        if (const std::optional<Wide_canonical_point> W = wide_enclosed_canonical_point(t))
+          filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, seen);
+    }
     if (filtered == Filtered_outcome::no_edge) return;
     if (filtered == Filtered_outcome::edge) {
       e.tie_set.assign(triple.begin(), triple.end());
@@ -311,7 +369,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     const std::optional<std::vector<Site_index>> tie = tie_at({triple.begin(), triple.end()}, *test, [&](Site_index s) {
       return curve_point_conflict(w, sites[s]);
     });
-    if (!tie || !std::equal(triple.begin(), triple.end(), tie->begin())) return;  // not in it, or not its smallest triple
+    if (!tie) return;  // not in it
     e.tie_set = *tie;
     found[c] = std::make_unique<Diagram_edge>(std::move(e));
   };
@@ -324,6 +382,13 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     if (found[c]) parts.edges.push_back(std::move(*found[c]));
   }
   std::vector<std::unique_ptr<Diagram_edge>>().swap(found);
+  // A curve of k > 3 tied sites is every one of its triples' whole trisector, found by each offered triple:
+  // once. (The smallest triple would not do: a triangulated set need not offer it.)
+  cancellable_sort(parts.edges.begin(), parts.edges.end(), cancellation,
+                   [](const Diagram_edge& x, const Diagram_edge& y) { return x.tie_set < y.tie_set; });
+  parts.edges.erase(std::unique(parts.edges.begin(), parts.edges.end(),
+                                [](const Diagram_edge& x, const Diagram_edge& y) { return x.tie_set == y.tie_set; }),
+                    parts.edges.end());
 
   // The edges through vertices, then the vertex-free ones.
   const Items_by_site edges_of_site = items_by_site(

@@ -17,9 +17,21 @@
 // The octree keeps only the boxes that hold two escaping sites or three that may have a closed trisector
 // (Octree_regions): a box that holds the tie set of a vertex-free part is among them, by the last point
 // (its sites are escaping, or an ellipse's), so the candidates and the box that contains W are unchanged.
-// Cost: O(k^3) triples per box of k sites, each one interval test unless its sites all escape; those kept
-// are sorted and grouped; each candidate with no vertex costs one classification, and those that pass the
-// escaping test one witness, filtered, tested in parallel with `threads`.
+// A set of more than all_triples_up_to sites (a far field patch of hundreds of escaping sites on a deep
+// input made 83 million triples) offers only the triples whose three edges are edges of the triangulation of
+// its sites' lifts (lifted_triangulation.h), and those with a site whose lift is no vertex of it. That loses
+// no candidate: where W is a point of an edge of the triple T, T owns W and every other site of a set
+// holding T and W (a box containing W, or the patch whose cone does) is strictly farther, so, by the
+// argument of lifted_triangulation.h for three sites instead of four, the lifts of T span a cell of the
+// regular subdivision of the set's lifts (three collinear lifts tie on a whole sheet, never on a curve
+// alone), which the triangulation refines: a triangle whose edges are edges of it. A curve of k > 3 tied
+// sites is every one of its triples' whole trisector: it is found from any triple offered, and kept once.
+// The reference (no octree) offers every triple, so that it stays the simple computation the tests trust.
+// Cost: O(k^3) triples per box of k <= all_triples_up_to sites, each one interval test unless its sites all
+// escape; O(k log k) expected for the triangulation of a larger set, plus its triangles (O(k) to O(k^2))
+// and k^2 per site whose lift is no vertex; those kept are sorted and grouped; each candidate with no
+// vertex costs one classification, and those that pass the escaping test one witness, filtered (in
+// intervals, then in wide intervals where those leave the double range), tested in parallel with `threads`.
 #pragma once
 
 #include <utility>
@@ -40,8 +52,11 @@ struct Vertex_free_parts {
 // `edges` are the edges with a vertex. `regions` from the same octree run as `diagram` (or, for a
 // reference, no box and every active site in one far set). Checks cancellation (cancellation.h) once per
 // box or far set whose candidates it lists, per 4096 candidates grouped, and per candidate tested.
+// `all_triples_up_to`: the largest set of an octree whose triples are all offered (tests lower it to compare).
+inline constexpr std::size_t kAllTriplesUpTo = 64;
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions,
-                                    int threads = 1, const Cancellation* cancellation = nullptr);
+                                    int threads = 1, const Cancellation* cancellation = nullptr,
+                                    std::size_t all_triples_up_to = kAllTriplesUpTo);
 
 }  // namespace apollonius
