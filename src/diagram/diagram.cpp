@@ -20,16 +20,29 @@ struct Sort_key {
   std::size_t position;  // where the vertex lies
 };
 
+// Asks for the cache lines of v ahead of a move from it.
+void prefetch(const Diagram_vertex& v) {
+  const char* first = reinterpret_cast<const char*>(&v);
+  for (std::size_t offset = 0; offset < sizeof(Diagram_vertex); offset += 64) __builtin_prefetch(first + offset);
+}
+
 // Puts vertices[order[i]] at i for every i, moving each vertex once (one cycle of the permutation at a
-// time); `order` ends as the identity.
+// time); `order` ends as the identity. The vertices come in refinement order and go in site order, so
+// each move reads a vertex far from the last one: the vertex kLookahead moves ahead on the cycle is
+// fetched meanwhile (a cycle's positions ahead of j still hold their targets; past its end the lookahead
+// stays on a settled position).
 void permute_in_place(std::vector<Diagram_vertex>& vertices, std::vector<std::size_t>& order, const Cancellation* cancellation) {
+  constexpr int kLookahead = 4;
   std::size_t moves = 0;
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (order[i] == i) continue;
+    std::size_t ahead = i;
+    for (int step = 0; step < kLookahead; ++step) prefetch(vertices[ahead = order[ahead]]);
     Diagram_vertex held = std::move(vertices[i]);
     std::size_t j = i;
     while (order[j] != i) {
       if (++moves % 4096 == 0) throw_if_cancelled(cancellation);
+      prefetch(vertices[ahead = order[ahead]]);
       const std::size_t k = order[j];
       vertices[j] = std::move(vertices[k]);
       order[j] = j;
