@@ -180,16 +180,21 @@ std::optional<Vector4<Interval>> enclosed_canonical_point(const Trisector& t) {
   }
 }
 
-std::optional<Wide_canonical_point> wide_enclosed_canonical_point(const Trisector& t) {
+template <class NT>
+std::optional<Framed_curve_point<NT>> framed_enclosed_canonical_point(const Trisector& t) {
   try {
-    const Wide_trisector_geometry& g = t.wide_geometry();
-    if (const std::optional<Vector4<Wide_interval>> X = canonical_point_enclosure(g.geometry))
-      return Wide_canonical_point{*X, g.origin};
+    const Framed_trisector_geometry<NT>& g = t.framed_geometry<NT>();
+    Rounding_guard guard;  // Wide_interval's; Mpfr_interval rounds by itself
+    if (const std::optional<Vector4<NT>> X = canonical_point_enclosure(g.geometry))
+      return Framed_curve_point<NT>{*X, g.origin};
     return std::nullopt;
   } catch (const Uncertain_sign&) {
     return std::nullopt;
   }
 }
+
+template std::optional<Framed_curve_point<Wide_interval>> framed_enclosed_canonical_point(const Trisector&);
+template std::optional<Framed_curve_point<Mpfr_interval>> framed_enclosed_canonical_point(const Trisector&);
 
 bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut) {
   {  // The interval e1, e2 enclose the exact ones (trisector.h): a certainly nonzero product decides.

@@ -41,13 +41,15 @@ std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<
 // Precondition: a Rounding_guard; the trisector is an ellipse, hyperbola or parabola.
 std::optional<Vector4<Interval>> enclosed_canonical_point(const Trisector& t);
 
-// The same in wide intervals (Trisector::wide_geometry), where the intervals did not decide (a deep input):
-// X relative to the trisector's site `origin` (X_origin = X_a + 2 (p_a - p_origin, w_origin - w_a)).
-struct Wide_canonical_point {
-  Vector4<Wide_interval> X;
+// The same in Wide_interval or Mpfr_interval (Trisector::framed_geometry), where the intervals did not
+// decide: X relative to the trisector's site `origin` (X_origin = X_a + 2 (p_a - p_origin, w_origin - w_a)).
+template <class NT>
+struct Framed_curve_point {
+  Vector4<NT> X;
   int origin;
 };
-std::optional<Wide_canonical_point> wide_enclosed_canonical_point(const Trisector& t);
+template <class NT>
+std::optional<Framed_curve_point<NT>> framed_enclosed_canonical_point(const Trisector& t);
 
 // Whether the point is on the sheet X_3 > 0 (a point of the trisector, not of the other branch).
 bool on_sheet(const Curve_point& p);

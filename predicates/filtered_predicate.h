@@ -21,7 +21,8 @@ namespace apollonius {
 // `static std::optional<R> ball_stage(...)`, double-double balls in round-to-nearest (vertex_ball.h),
 // tried where the intervals are not certain; it may provide `static std::optional<R> wide_stage(...)`,
 // wide intervals (wide_interval.h) under a Rounding_guard, for values beyond the double range that the
-// stages before overflow or underflow; and `using Exact_number = Rational;` when
+// stages before overflow or underflow; it may provide `static std::optional<R> precise_stage(...)`, MPFR
+// intervals (mpfr_interval.h), for signs a hair from zero; and `using Exact_number = Rational;` when
 // its exact stage divides (the default, Exact, never does).
 template <class P, class = void>
 struct Exact_number_of {
@@ -57,6 +58,9 @@ class Filtered_predicate {
     if constexpr (has_wide_stage<Predicate, Args...>(0)) {
       Rounding_guard guard;
       if (const auto certain = Predicate::wide_stage(args...)) return *certain;
+    }
+    if constexpr (has_precise_stage<Predicate, Args...>(0)) {
+      if (const auto certain = Predicate::precise_stage(args...)) return *certain;
     }
     counter().count_exact_stage();
     return Predicate::template evaluate<typename Exact_number_of<Predicate>::type>(args...);
@@ -102,6 +106,15 @@ class Filtered_predicate {
   }
   template <class P, class... Args>
   static constexpr bool has_wide_stage(...) {
+    return false;
+  }
+
+  template <class P, class... Args>
+  static constexpr auto has_precise_stage(int) -> decltype(P::precise_stage(std::declval<const Args&>()...), true) {
+    return true;
+  }
+  template <class P, class... Args>
+  static constexpr bool has_precise_stage(...) {
     return false;
   }
 

@@ -157,6 +157,7 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
 
 template Trisector_geometry<Interval> trisector_geometry<Interval>(const std::array<Site, 3>&);
 template Trisector_geometry<Wide_interval> trisector_geometry<Wide_interval>(const std::array<Site, 3>&);
+template Trisector_geometry<Mpfr_interval> trisector_geometry<Mpfr_interval>(const std::array<Site, 3>&);
 template Trisector_geometry<Rational> trisector_geometry<Rational>(const std::array<Site, 3>&);
 
 Root_number<Rational> lorentz_value(const Field_point<Rational>& p, const Vector4<Rational>& y) {
@@ -193,25 +194,40 @@ const Trisector_geometry<Interval>& Trisector::geometry<Interval>() const {
   return *interval_;
 }
 
-// Only asked for where the intervals did not decide: sites over many binades (deep inputs), whose exact
-// geometry has thousands of bits.
-const Wide_trisector_geometry& Trisector::wide_geometry() const {
-  const auto compute = [&]() -> std::optional<Wide_trisector_geometry> {
-    int origin = 0;
-    double closest = INFINITY;
-    for (int i = 0; i < 3; ++i)
-      for (int j = i + 1; j < 3; ++j)
-        if (const double d = coarse_distance(sites_[i], sites_[j]); d < closest) closest = d, origin = i;
-    std::array<Site, 3> from_origin = sites_;
-    std::swap(from_origin[0], from_origin[origin]);  // the other two in any order: the same plane L
-    Rounding_guard guard;
-    try {
-      return Wide_trisector_geometry{trisector_geometry<Wide_interval>(from_origin), origin};
-    } catch (const Uncertain_sign&) {
-      return std::nullopt;
-    }
-  };
-  const std::optional<Wide_trisector_geometry>& g = wide_.get_or_compute(compute);
+namespace {
+
+// Framed_trisector_geometry<NT> of the sites, or nothing where NT does not decide.
+template <class NT>
+std::optional<Framed_trisector_geometry<NT>> framed(const std::array<Site, 3>& sites) {
+  int origin = 0;
+  double closest = INFINITY;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (const double d = coarse_distance(sites[i], sites[j]); d < closest) closest = d, origin = i;
+  std::array<Site, 3> from_origin = sites;
+  std::swap(from_origin[0], from_origin[origin]);  // the other two in any order: the same plane L
+  Rounding_guard guard;  // Wide_interval's; Mpfr_interval rounds by itself
+  try {
+    return Framed_trisector_geometry<NT>{trisector_geometry<NT>(from_origin), origin};
+  } catch (const Uncertain_sign&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+// Only asked for where the intervals did not decide: deep inputs, whose exact geometry has thousands of
+// bits, and signs a hair from zero.
+template <>
+const Framed_trisector_geometry<Wide_interval>& Trisector::framed_geometry<Wide_interval>() const {
+  const auto& g = wide_.get_or_compute([&] { return framed<Wide_interval>(sites_); });
+  if (!g) throw Uncertain_sign();
+  return *g;
+}
+
+template <>
+const Framed_trisector_geometry<Mpfr_interval>& Trisector::framed_geometry<Mpfr_interval>() const {
+  const auto& g = precise_.get_or_compute([&] { return framed<Mpfr_interval>(sites_); });
   if (!g) throw Uncertain_sign();
   return *g;
 }

@@ -11,7 +11,8 @@
 //  - in a basis (e1, e2) of L's directions orthogonal for <,>, with centre C (<C, e1> = <C, e2> = 0), the
 //    conic is gamma1 s^2 + gamma2 t^2 = K for X = C + s e1 + t e2, gamma_i = <e_i, e_i>, K = -<C, C>.
 // Everything here is a rational function of the input doubles: NT is Interval (the filter), Wide_interval
-// (the filter for sites whose products leave the double range: wide_interval.h) or Rational.
+// (for sites whose products leave the double range: wide_interval.h), Mpfr_interval (for signs a hair
+// from zero: mpfr_interval.h) or Rational.
 #pragma once
 
 #include <array>
@@ -25,6 +26,7 @@
 #include "predicates/root_sign.h"
 #include "predicates/site.h"
 #include "predicates/vertex.h"
+#include "predicates/mpfr_interval.h"
 #include "predicates/wide_interval.h"
 
 namespace apollonius {
@@ -105,16 +107,17 @@ inline Interval euclidean_value(const Field_point<Interval>& p, const Vector4<In
 Root_number<Rational> euclidean_value(const Field_point<Rational>& p, const Vector4<Rational>& y, const Rational& c);
 
 
-// The geometry in wide intervals (wide_interval.h), for sites whose products leave the double range, relative
-// to sites[origin], the first site of the closest pair: two sites a hair apart beside a far one (a deep
-// input) give rows from the far one that are equal to within the hair, and rows of their own sizes from one
-// of the two. Frames differ by a translation s with <s, y> = 0 for every direction y of L (on L the sites'
-// cones agree), and the basis depends only on L's directions and the pivot, whose minors scale by one nonzero
-// factor: so kind, shape, e1, e2, monotone, gamma1, gamma2 and K are those of every frame, and a cut
-// <X, y> = 0 by such a y is the same set in every frame. Only point, centre, rows and heights are relative
-// to the origin (X_origin = X_a + 2 (p_a - p_origin, w_origin - w_a)).
-struct Wide_trisector_geometry {
-  Trisector_geometry<Wide_interval> geometry;
+// The geometry in a later filter's number type (Wide_interval, Mpfr_interval), relative to sites[origin], the
+// first site of the closest pair: two sites a hair apart beside a far one (a deep input) give rows from the
+// far one that are equal to within the hair, and rows of their own sizes from one of the two. Frames differ
+// by a translation s with <s, y> = 0 for every direction y of L (on L the sites' cones agree), and the basis
+// depends only on L's directions and the pivot, whose minors scale by one nonzero factor: so kind, shape,
+// e1, e2, monotone, gamma1, gamma2 and K are those of every frame, and a cut <X, y> = 0 by such a y is the
+// same set in every frame. Only point, centre, rows and heights are relative to the origin
+// (X_origin = X_a + 2 (p_a - p_origin, w_origin - w_a)).
+template <class NT>
+struct Framed_trisector_geometry {
+  Trisector_geometry<NT> geometry;
   int origin = 0;  // 0, 1 or 2
 };
 
@@ -132,15 +135,17 @@ class Trisector {
   template <class NT>
   const Trisector_geometry<NT>& geometry() const;
 
-  // The wide geometry (Wide_trisector_geometry), for the filters where the intervals could not decide;
-  // throws Uncertain_sign when it does not decide either.
-  const Wide_trisector_geometry& wide_geometry() const;
+  // The geometry in Wide_interval or Mpfr_interval (Framed_trisector_geometry), for the filters where the
+  // intervals could not decide; computed on first use; throws Uncertain_sign when it does not decide either.
+  template <class NT>
+  const Framed_trisector_geometry<NT>& framed_geometry() const;
 
  private:
   std::array<Site_index, 3> indices_;
   std::array<Site, 3> sites_;
   std::optional<Trisector_geometry<Interval>> interval_;                  // empty: undecided in intervals
-  Computed_once<std::optional<Wide_trisector_geometry>> wide_;            // on first use; empty: undecided
+  Computed_once<std::optional<Framed_trisector_geometry<Wide_interval>>> wide_;     // empty: undecided
+  Computed_once<std::optional<Framed_trisector_geometry<Mpfr_interval>>> precise_;  // empty: undecided
   Computed_once<Trisector_geometry<Rational>> rational_;                 // computed on first use, by any thread
 };
 
@@ -148,6 +153,10 @@ template <>
 const Trisector_geometry<Interval>& Trisector::geometry<Interval>() const;
 template <>
 const Trisector_geometry<Rational>& Trisector::geometry<Rational>() const;
+template <>
+const Framed_trisector_geometry<Wide_interval>& Trisector::framed_geometry<Wide_interval>() const;
+template <>
+const Framed_trisector_geometry<Mpfr_interval>& Trisector::framed_geometry<Mpfr_interval>() const;
 
 // The vertex in the trisector's coordinates X = 2 (v - p_a, r + w_a): X_o + 2 (p_o - p_a, w_a - w_o) for
 // the vertex's own origin o.

@@ -31,8 +31,15 @@ struct Classify_trisector_predicate {
 
   // The kind and shape are the same in every frame (trisector.h).
   static std::optional<std::pair<Trisector_kind, Curve_shape>> wide_stage(const Trisector& t) {
+    return framed<Wide_interval>(t);
+  }
+  static std::optional<std::pair<Trisector_kind, Curve_shape>> precise_stage(const Trisector& t) {
+    return framed<Mpfr_interval>(t);
+  }
+  template <class NT>
+  static std::optional<std::pair<Trisector_kind, Curve_shape>> framed(const Trisector& t) {
     try {
-      const Trisector_geometry<Wide_interval>& g = t.wide_geometry().geometry;
+      const Trisector_geometry<NT>& g = t.framed_geometry<NT>().geometry;
       return std::pair{g.kind, g.shape};
     } catch (const Uncertain_sign&) {
       return std::nullopt;

@@ -98,12 +98,14 @@ std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& bas
 
 // The filter of the curve's test: decides from an enclosure X of its canonical point W (which holds the exact
 // W), relative to the trisector's site o, when the enclosure's signs are certain: nothing = no edge; a tie
-// set = the triple alone. Else undecided (the exact test follows). NT: Interval, or Wide_interval where the
-// intervals did not decide (a deep input), whose exact W has thousands of bits.
+// set = the triple alone. Else undecided (the exact test follows). NT: Interval, then Wide_interval and
+// Mpfr_interval where the intervals did not decide (a deep input, a lattice one ulp off), whose exact W costs
+// a Gmpq geometry (about half a millisecond, and thousands of bits on a deep input).
 enum class Filtered_outcome { no_edge, edge, undecided };
 
 Interval in_double_range(const Interval& x) { return x; }
 Interval in_double_range(const Wide_interval& x) { return x.to_interval(); }  // infinite bounds beyond it
+Interval in_double_range(const Mpfr_interval& x) { return x.to_interval(); }
 
 template <class NT>
 Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, const Site& o,
@@ -343,9 +345,14 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
       Rounding_guard guard;
       if (const std::optional<Vector4<Interval>> X = enclosed_canonical_point(t))
         filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, seen);
-      if (filtered == Filtered_outcome::undecided)
-        if (const std::optional<Wide_canonical_point> W = wide_enclosed_canonical_point(t))
-          filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, seen);
+      const auto try_framed = [&](auto number) {
+        using NT = decltype(number);
+        if (filtered == Filtered_outcome::undecided)
+          if (const std::optional<Framed_curve_point<NT>> W = framed_enclosed_canonical_point<NT>(t))
+            filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, seen);
+      };
+      try_framed(Wide_interval());
+      try_framed(Mpfr_interval());  // signs a hair from zero (a lattice one ulp off)
     }
     if (filtered == Filtered_outcome::no_edge) return;
     if (filtered == Filtered_outcome::edge) {

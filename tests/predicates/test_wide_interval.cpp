@@ -8,16 +8,15 @@
 #include <limits>
 #include <random>
 
-#include "predicates/arc_witness.h"
-#include "predicates/curve_point.h"
 #include "predicates/is_hidden.h"
 #include "predicates/rounding_guard.h"
-#include "predicates/trisector_predicates.h"
 #include "predicates/vertex_conflict.h"
 #include "predicates/vertices_of.h"
 #include "predicates/wide_interval.h"
+#include "support/clustered_sites.h"
 
 using namespace apollonius;
+using apollonius::testing::clustered_sites;
 
 namespace {
 
@@ -42,39 +41,6 @@ struct Both {
   Wide_interval wide;
   Exact exact;
 };
-
-// Whether the exact number x lies in the wide interval w.
-bool holds(const Wide_interval& w, const Root_number<Rational>& x) {
-  const auto bound = [&](double b) {
-    return Root_number<Rational>{to_rational(times_power_of_two(Exact(b), static_cast<int>(w.exponent()))),
-                                 Rational(0), Rational(0), Rational(1)};
-  };
-  return compare(x, bound(w.mantissa().inf())) != Sign::NEGATIVE && compare(x, bound(w.mantissa().sup())) != Sign::POSITIVE;
-}
-
-// Sites in clusters of their own scales, as in `generate wide-range`: a site at 2^e, and sites a hair from
-// it (2^(e - h), h up to 900) or at scales of their own. Weights stay below the spread, so that most
-// quadruples have vertices.
-std::vector<Site> clustered_sites(std::mt19937_64& random, int count) {
-  std::uniform_int_distribution<int> exponent(-700, 700), hair(20, 900), small(-4, 4), choice(0, 2);
-  std::vector<Site> sites;
-  const auto at_scale = [&](double scale) {
-    return Site{scale * small(random), scale * small(random), scale * small(random),
-                scale * std::abs(small(random)) / 8};
-  };
-  while (static_cast<int>(sites.size()) < count) {
-    if (sites.empty() || choice(random) == 0) {
-      sites.push_back(at_scale(std::ldexp(1.0, exponent(random))));
-      continue;
-    }
-    const Site& near = sites[std::uniform_int_distribution<std::size_t>(0, sites.size() - 1)(random)];
-    const double scale =
-        std::max({std::fabs(near.x), std::fabs(near.y), std::fabs(near.z), std::fabs(near.w), 0x1p-700});
-    const Site offset = at_scale(std::ldexp(scale, -hair(random)));
-    sites.push_back({near.x + offset.x, near.y + offset.y, near.z + offset.z, near.w + offset.w});
-  }
-  return sites;
-}
 
 // Whether each exact X_j lies in the vertex's plain box, and in its scaled box where there is one.
 bool boxes_hold(const Vertex& filtered, const Vertex& exact) {
@@ -342,67 +308,4 @@ TEST_CASE("vertex_conflict's and is_hidden's wide stages agree with the exact st
   CHECK(conflicts_beyond_intervals > 800);
   CHECK(hidden > 150000);
   CHECK(hidden_beyond_intervals > 15000);
-}
-
-// The trisector's geometry in wide intervals (Trisector::wide_geometry, relative to the first site of the
-// closest pair) and its canonical point's enclosure (curve_point.h), which the search for vertex-free curves
-// tries where intervals do not decide: the same kind and shape as the exact geometry, and an enclosure that
-// holds arc_witness's exact point, moved to the wide geometry's origin.
-TEST_CASE("the trisector's wide geometry and canonical point agree with the exact stage on clustered sites") {
-  std::mt19937_64 random(20261201);
-  int plain_failed = 0, wide_decided = 0, enclosures = 0, enclosures_beyond_intervals = 0, other_origin = 0;
-  for (int trial = 0; trial < 6000; ++trial) {
-    CAPTURE(trial);
-    const std::vector<Site> s = clustered_sites(random, 3);
-    const auto visible = [&](Site_index i, Site_index j) { return !is_hidden(s[i], i, s[j], j) && !is_hidden(s[j], j, s[i], i); };
-    if (!visible(0, 1) || !visible(0, 2) || !visible(1, 2)) continue;
-    const Trisector t({0, 1, 2}, {s[0], s[1], s[2]});
-    bool plain = true;
-    try {
-      (void)t.geometry<Interval>();
-    } catch (const Uncertain_sign&) {
-      plain = false;
-      ++plain_failed;
-    }
-    const Wide_trisector_geometry* wide = nullptr;
-    try {
-      wide = &t.wide_geometry();
-    } catch (const Uncertain_sign&) {
-      continue;
-    }
-    ++wide_decided;
-    const Trisector_geometry<Rational>& exact = t.geometry<Rational>();
-    CHECK(wide->geometry.kind == exact.kind);
-    CHECK(wide->geometry.shape == exact.shape);
-    if (exact.kind != Trisector_kind::ellipse && exact.kind != Trisector_kind::hyperbola &&
-        exact.kind != Trisector_kind::parabola)
-      continue;
-    std::optional<Wide_canonical_point> enclosure;
-    {
-      Rounding_guard guard;
-      enclosure = wide_enclosed_canonical_point(t);
-    }
-    if (!enclosure) continue;
-    CHECK(enclosure->origin == wide->origin);
-    ++enclosures;
-    enclosures_beyond_intervals += !plain;
-    other_origin += enclosure->origin != 0;
-    const Field_point<Rational> W = arc_witness(t, std::nullopt, std::nullopt).coordinates<Rational>();
-    const Site &a = s[0], &o = s[static_cast<std::size_t>(enclosure->origin)];
-    const double to[4] = {a.x, a.y, a.z, o.w}, from[4] = {o.x, o.y, o.z, a.w};
-    for (int j = 0; j < 4; ++j) {
-      CAPTURE(j);
-      // X_o = X_a + 2 (p_a - p_o, w_o - w_a), over W's denominator.
-      const Rational shift = Rational(2) * (Rational(to[j]) - Rational(from[j]));
-      const Root_number<Rational> x{W.scaled[j].a + shift * W.denominator, W.scaled[j].b, W.discriminant, W.denominator};
-      CHECK(holds(enclosure->X[j], x));
-    }
-  }
-  MESSAGE(plain_failed << " trisectors beyond intervals; " << wide_decided << " decided in wide intervals; "
-                       << enclosures << " canonical points enclosed, " << enclosures_beyond_intervals
-                       << " where intervals failed, " << other_origin << " from another origin than site 0");
-  CHECK(plain_failed > 700);
-  CHECK(wide_decided > 1300);
-  CHECK(enclosures_beyond_intervals > 600);
-  CHECK(other_origin > 250);
 }

@@ -104,7 +104,8 @@ TEST_CASE("the reference offers every triple whatever the bound") {
   REQUIRE(regions.far_sets.size() == 1);
   REQUIRE(regions.far_sets[0].size() > 4);
   const Diagram_topology topology = build_edges(sites, diagram);
-  const Vertex_free_parts every = vertex_free_parts(sites, topology.vertices, topology.edges, regions, 1, nullptr, kEveryTriple);
+  const Vertex_free_parts every =
+      vertex_free_parts(sites, topology.vertices, topology.edges, regions, 1, nullptr, kEveryTriple);
   const Vertex_free_parts bounded = vertex_free_parts(sites, topology.vertices, topology.edges, regions, 1, nullptr, 4);
   CHECK(bounded.candidate_triples == every.candidate_triples);
   CHECK(every.candidate_triples > 0);
