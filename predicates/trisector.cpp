@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "predicates/rounding_guard.h"
+#include "predicates/trisector_rows.h"
 
 namespace apollonius {
 namespace {
@@ -21,6 +22,88 @@ Vector4<NT> minus(const Vector4<NT>& x, const Vector4<NT>& y) {
 template <class NT>
 Vector4<NT> scaled(const NT& s, const Vector4<NT>& x) {
   return {s * x[0], s * x[1], s * x[2], s * x[3]};
+}
+
+// The exact signs that the filters' geometries fall back on (sign_or): division-free polynomials of the input
+// in Exact, so that a filter decides the exact ties of a lattice (a parabola, a point, collinear centres, a
+// vanishing minor) without the Rational geometry, whose gcds cost about half a millisecond.
+class Exact_signs {
+ public:
+  explicit Exact_signs(const std::array<Site, 3>& sites)
+      : sites_(sites), b_(relative_site<Exact>(sites[0], sites[1])), c_(relative_site<Exact>(sites[0], sites[2])) {}
+
+  Sign minor(int i, int j) const { return certain_sign(b_.row[i] * c_.row[j] - b_.row[j] * c_.row[i]); }
+
+  // The sign of g11 g22 - g12^2, the Lorentz form on L's directions: minus that of the rows' Gram
+  // determinant (trisector_rows.h).
+  Sign determinant() const {
+    return -certain_sign(rows_gram_determinant(b_.rhs, c_.rhs, power_gap<Exact>(sites_[1], sites_[2])));
+  }
+
+  // The sign of K where g11 g22 - g12^2 != 0, with trisector_geometry's vectors scaled by nonzero factors of
+  // known sign: f~_t = m f_t and P~ = m P (m the pivot minor); e~_i = s_i e_i, s_i = m or m^3;
+  // gamma~_i = s_i^2 gamma_i. Then, as <C, e_i> = 0,
+  //     K gamma1 gamma2 (m s1 s2)^2 = -<P~, P~> gamma~1 gamma~2 + <P~, e~1>^2 gamma~2 + <P~, e~2>^2 gamma~1.
+  Sign conic_constant() const {
+    const Vector4<Exact>&rb = b_.row, &rc = c_.row;
+    int pivot_i = -1, pivot_j = -1;
+    Exact m(0);
+    for (int i = 0; i < 4 && pivot_i < 0; ++i)
+      for (int j = i + 1; j < 4 && pivot_i < 0; ++j)
+        if (minor(i, j) != Sign::ZERO) pivot_i = i, pivot_j = j, m = rb[i] * rc[j] - rb[j] * rc[i];
+    std::array<int, 2> free{};
+    for (int k = 0, t = 0; k < 4; ++k)
+      if (k != pivot_i && k != pivot_j) free[t++] = k;
+    const auto solve = [&](const Exact& right_b, const Exact& right_c, Vector4<Exact>& x) {  // Cramer, times m
+      x[pivot_i] = right_b * rc[pivot_j] - right_c * rb[pivot_j];
+      x[pivot_j] = rb[pivot_i] * right_c - rc[pivot_i] * right_b;
+    };
+    std::array<Vector4<Exact>, 2> f;
+    for (int t = 0; t < 2; ++t) {
+      f[t] = {Exact(0), Exact(0), Exact(0), Exact(0)};
+      f[t][free[t]] = m;
+      solve(-rb[free[t]], -rc[free[t]], f[t]);
+    }
+    Vector4<Exact> point{Exact(0), Exact(0), Exact(0), Exact(0)};
+    solve(b_.rhs, c_.rhs, point);
+    const Exact g11 = lorentz_product(f[0], f[0]), g12 = lorentz_product(f[0], f[1]), g22 = lorentz_product(f[1], f[1]);
+    Vector4<Exact> e1, e2;
+    if (certain_sign(g11) != Sign::ZERO) {
+      e1 = f[0];
+      e2 = combination(g11, f[1], -g12, f[0]);
+    } else if (certain_sign(g22) != Sign::ZERO) {
+      e1 = f[1];
+      e2 = combination(g22, f[0], -g12, f[1]);
+    } else {
+      e1 = combination(Exact(1), f[0], Exact(1), f[1]);
+      e2 = combination(Exact(1), f[0], Exact(-1), f[1]);
+    }
+    const Exact gamma1 = lorentz_product(e1, e1), gamma2 = lorentz_product(e2, e2);
+    const Exact p1 = lorentz_product(point, e1), p2 = lorentz_product(point, e2);
+    return certain_sign(gamma1) * certain_sign(gamma2) *
+           certain_sign(p1 * p1 * gamma2 + p2 * p2 * gamma1 - lorentz_product(point, point) * gamma1 * gamma2);
+  }
+
+  // The components of (p_b - p_a) x (p_c - p_a).
+  Sign cross(int k) const {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    return certain_sign(b_.row[i] * c_.row[j] - b_.row[j] * c_.row[i]);
+  }
+
+ private:
+  const std::array<Site, 3>& sites_;
+  Relative_site<Exact> b_, c_;
+};
+
+// The sign of x, or, where the filter type NT cannot tell, exact_sign() (Exact_signs).
+template <class NT, class Exact_sign>
+Sign sign_or(const NT& x, Exact_sign exact_sign) {
+  if constexpr (std::is_same_v<NT, Rational>) {
+    return certain_sign(x);
+  } else {
+    if (const std::optional<Sign> s = sign_if_certain(x)) return *s;
+    return exact_sign();
+  }
 }
 
 }  // namespace
@@ -51,12 +134,18 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
   // The first pair of columns (i, j) whose 2x2 minor is not 0, in a fixed order, so that the filter and the
   // exact stage build the same basis (and so the same forward direction); rank < 2 means no point at all
   // (two of the sites would coincide, and they are distinct).
+  // A filter's uncertain signs are decided exactly (Exact_signs), computed once on first need.
+  std::optional<Exact_signs> exact;
+  const auto exact_signs = [&]() -> const Exact_signs& {
+    if (!exact) exact.emplace(sites);
+    return *exact;
+  };
   int pivot_i = -1, pivot_j = -1;
   NT minor(0);
   for (int i = 0; i < 4 && pivot_i < 0; ++i)
     for (int j = i + 1; j < 4 && pivot_i < 0; ++j) {
       const NT m = rb[i] * rc[j] - rb[j] * rc[i];
-      if (sign_of(m) != Sign::ZERO) pivot_i = i, pivot_j = j, minor = m;
+      if (sign_or(m, [&] { return exact_signs().minor(i, j); }) != Sign::ZERO) pivot_i = i, pivot_j = j, minor = m;
     }
   if (pivot_i < 0) return g;  // empty
   std::array<int, 2> free{};
@@ -79,12 +168,13 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
   solve(g.heights[0], g.heights[1], g.point);
 
   const NT g11 = lorentz_product(f[0], f[0]), g12 = lorentz_product(f[0], f[1]), g22 = lorentz_product(f[1], f[1]);
-  const Sign determinant = sign_of(g11 * g22 - g12 * g12);
+  const Sign determinant = sign_or(g11 * g22 - g12 * g12, [&] { return exact_signs().determinant(); });
   const bool equal_weights = sign_of(rb[3]) == Sign::ZERO && sign_of(rc[3]) == Sign::ZERO;
   const Vector4<NT> ab{rb[0], rb[1], rb[2], NT(0)}, ac{rc[0], rc[1], rc[2], NT(0)};
-  const bool collinear_centres = sign_of(ab[1] * ac[2] - ab[2] * ac[1]) == Sign::ZERO &&
-                                 sign_of(ab[2] * ac[0] - ab[0] * ac[2]) == Sign::ZERO &&
-                                 sign_of(ab[0] * ac[1] - ab[1] * ac[0]) == Sign::ZERO;
+  const bool collinear_centres =
+      sign_or(ab[1] * ac[2] - ab[2] * ac[1], [&] { return exact_signs().cross(0); }) == Sign::ZERO &&
+      sign_or(ab[2] * ac[0] - ab[0] * ac[2], [&] { return exact_signs().cross(1); }) == Sign::ZERO &&
+      sign_or(ab[0] * ac[1] - ab[1] * ac[0], [&] { return exact_signs().cross(2); }) == Sign::ZERO;
 
   if (determinant == Sign::ZERO) {
     // The axis kappa spans the kernel of the restricted form; e2 completes the basis.
@@ -130,7 +220,7 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
   g.centre = minus(minus(g.point, scaled(lorentz_product(g.point, g.e1) / g.gamma1, g.e1)),
                    scaled(lorentz_product(g.point, g.e2) / g.gamma2, g.e2));
   g.K = -lorentz_product(g.centre, g.centre);
-  const Sign k = sign_of(g.K);
+  const Sign k = sign_or(g.K, [&] { return exact_signs().conic_constant(); });
 
   if (determinant == Sign::POSITIVE) {
     if (sign_of(g.gamma1) != Sign::POSITIVE || sign_of(g.gamma2) != Sign::POSITIVE)

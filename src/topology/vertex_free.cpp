@@ -332,7 +332,8 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   std::vector<std::unique_ptr<Diagram_edge>> found(triples.size());
   const auto test_triple = [&](std::size_t c) {
     throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
-    const auto& [triple, seen] = triples[c];
+    const Triple& triple = triples[c].first;  // not a structured binding: the lambda below captures it
+    const Occurrences& seen = triples[c].second;
     const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
     const auto [kind, shape] = classify_trisector(t);
     if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola) return;
