@@ -24,6 +24,26 @@ namespace apollonius {
 // stages before overflow or underflow; it may provide `static std::optional<R> precise_stage(...)`, MPFR
 // intervals (mpfr_interval.h), for signs a hair from zero; and `using Exact_number = Rational;` when
 // its exact stage divides (the default, Exact, never does).
+// The stages a predicate may provide, as expressions on its arguments, and whether it provides one:
+// provides<Stage, P, Args...> is true where Stage<P, Args...> names a type.
+template <class P, class... A>
+using Static_filter = decltype(P::static_filter(std::declval<const A&>()...));
+template <class P, class... A>
+using Interval_stage = decltype(P::interval_stage(std::declval<const A&>()...));
+template <class P, class... A>
+using Ball_stage = decltype(P::ball_stage(std::declval<const A&>()...));
+template <class P, class... A>
+using Wide_stage = decltype(P::wide_stage(std::declval<const A&>()...));
+template <class P, class... A>
+using Precise_stage = decltype(P::precise_stage(std::declval<const A&>()...));
+
+template <class, template <class...> class Stage, class... Ts>
+struct Provides : std::false_type {};
+template <template <class...> class Stage, class... Ts>
+struct Provides<std::void_t<Stage<Ts...>>, Stage, Ts...> : std::true_type {};
+template <template <class...> class Stage, class... Ts>
+inline constexpr bool provides = Provides<void, Stage, Ts...>::value;
+
 template <class P, class = void>
 struct Exact_number_of {
   using type = Exact;
@@ -39,10 +59,10 @@ class Filtered_predicate {
   template <class... Args>
   auto operator()(const Args&... args) const {
     counter().count_evaluation();
-    if constexpr (has_static_filter<Predicate, Args...>(0)) {
+    if constexpr (provides<Static_filter, Predicate, Args...>) {
       if (const auto certain = Predicate::static_filter(args...)) return *certain;
     }
-    if constexpr (has_interval_stage<Predicate, Args...>(0)) {
+    if constexpr (provides<Interval_stage, Predicate, Args...>) {
       Rounding_guard guard;
       if (const auto certain = Predicate::interval_stage(args...)) return *certain;
     } else {
@@ -52,14 +72,14 @@ class Filtered_predicate {
       } catch (const Uncertain_sign&) {
       }
     }
-    if constexpr (has_ball_stage<Predicate, Args...>(0)) {
+    if constexpr (provides<Ball_stage, Predicate, Args...>) {
       if (const auto certain = Predicate::ball_stage(args...)) return *certain;
     }
-    if constexpr (has_wide_stage<Predicate, Args...>(0)) {
+    if constexpr (provides<Wide_stage, Predicate, Args...>) {
       Rounding_guard guard;
       if (const auto certain = Predicate::wide_stage(args...)) return *certain;
     }
-    if constexpr (has_precise_stage<Predicate, Args...>(0)) {
+    if constexpr (provides<Precise_stage, Predicate, Args...>) {
       if (const auto certain = Predicate::precise_stage(args...)) return *certain;
     }
     counter().count_exact_stage();
@@ -71,51 +91,6 @@ class Filtered_predicate {
   auto floating(const Args&... args) const {
     counter().count_evaluation();
     return Predicate::template evaluate<double>(args...);
-  }
-
-  template <class P, class... Args>
-  static constexpr auto has_static_filter(int) -> decltype(P::static_filter(std::declval<const Args&>()...), true) {
-    return true;
-  }
-  template <class P, class... Args>
-  static constexpr bool has_static_filter(...) {
-    return false;
-  }
-
-  template <class P, class... Args>
-  static constexpr auto has_interval_stage(int) -> decltype(P::interval_stage(std::declval<const Args&>()...), true) {
-    return true;
-  }
-  template <class P, class... Args>
-  static constexpr bool has_interval_stage(...) {
-    return false;
-  }
-
-  template <class P, class... Args>
-  static constexpr auto has_ball_stage(int) -> decltype(P::ball_stage(std::declval<const Args&>()...), true) {
-    return true;
-  }
-  template <class P, class... Args>
-  static constexpr bool has_ball_stage(...) {
-    return false;
-  }
-
-  template <class P, class... Args>
-  static constexpr auto has_wide_stage(int) -> decltype(P::wide_stage(std::declval<const Args&>()...), true) {
-    return true;
-  }
-  template <class P, class... Args>
-  static constexpr bool has_wide_stage(...) {
-    return false;
-  }
-
-  template <class P, class... Args>
-  static constexpr auto has_precise_stage(int) -> decltype(P::precise_stage(std::declval<const Args&>()...), true) {
-    return true;
-  }
-  template <class P, class... Args>
-  static constexpr bool has_precise_stage(...) {
-    return false;
   }
 
   static Predicate_counter& counter() {

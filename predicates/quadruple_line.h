@@ -79,6 +79,19 @@ inline double coarse_distance(const Site& a, const Site& b) {
   return std::max({std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z), std::fabs(a.w - b.w)});
 }
 
+// The position of the first site of the closest pair of `sites` (coarse_distance), the origin that filters
+// take: two sites a hair apart beside far ones (a cluster 1e-9 wide beside balls of radius 1) give rows
+// equal to within the hair from a far site, and rows of their own sizes from one of the two.
+template <std::size_t N>
+int closest_pair_origin(const std::array<Site, N>& sites) {
+  int origin = 0;
+  double closest = INFINITY;
+  for (int i = 0; i < static_cast<int>(N); ++i)
+    for (int j = i + 1; j < static_cast<int>(N); ++j)
+      if (const double d = coarse_distance(sites[i], sites[j]); d < closest) closest = d, origin = i;
+  return origin;
+}
+
 // The 3x3 minors of the 3 x 5 matrix [M | c] (columns 0..3 of M, column 4 = c), by Laplace expansion along
 // the first row over the ten 2x2 minors of the other two rows, which the seven minors needed share.
 template <class NT>

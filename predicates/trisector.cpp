@@ -1,6 +1,5 @@
 #include "predicates/trisector.h"
 
-#include <cmath>
 #include <stdexcept>
 
 #include "predicates/rounding_guard.h"
@@ -84,11 +83,8 @@ class Exact_signs {
            certain_sign(p1 * p1 * gamma2 + p2 * p2 * gamma1 - lorentz_product(point, point) * gamma1 * gamma2);
   }
 
-  // The components of (p_b - p_a) x (p_c - p_a).
-  Sign cross(int k) const {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    return certain_sign(b_.row[i] * c_.row[j] - b_.row[j] * c_.row[i]);
-  }
+  // The components of (p_b - p_a) x (p_c - p_a): minors of the rows' first three columns.
+  Sign cross(int k) const { return minor((k + 1) % 3, (k + 2) % 3); }
 
  private:
   const std::array<Site, 3>& sites_;
@@ -289,11 +285,7 @@ namespace {
 // Framed_trisector_geometry<NT> of the sites, or nothing where NT does not decide.
 template <class NT>
 std::optional<Framed_trisector_geometry<NT>> framed(const std::array<Site, 3>& sites) {
-  int origin = 0;
-  double closest = INFINITY;
-  for (int i = 0; i < 3; ++i)
-    for (int j = i + 1; j < 3; ++j)
-      if (const double d = coarse_distance(sites[i], sites[j]); d < closest) closest = d, origin = i;
+  const int origin = closest_pair_origin(sites);
   std::array<Site, 3> from_origin = sites;
   std::swap(from_origin[0], from_origin[origin]);  // the other two in any order: the same plane L
   Rounding_guard guard;  // Wide_interval's; Mpfr_interval rounds by itself

@@ -79,25 +79,13 @@ struct Vertices_of_predicate {
       if (std::optional<Quadruple_vertices> certain = vertices_on_line_if_certain(line, q)) return certain;
     } catch (const Uncertain_sign&) {
     }
-    const int origin = closest_pair_origin(q);
+    const int origin = closest_pair_origin(q.sites);
     if (origin == 0) return std::nullopt;
     try {
       return wide_vertices_from_origin(q, origin);
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
-  }
-
-  // The first site of the quadruple's closest pair (max norm over x, y, z, w). Two sites a hair apart
-  // beside far ones (a cluster 1e-9 wide beside balls of radius 1) give M two rows equal to within the
-  // hair when the origin is a far site, and rows of their own sizes when it is one of the two.
-  static int closest_pair_origin(const Quadruple& q) {
-    int origin = 0;
-    double closest = INFINITY;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        if (const double d = coarse_distance(q.sites[i], q.sites[j]); d < closest) closest = d, origin = i;
-    return origin;
   }
 
   // The wide stage with site m of the quadruple as the origin of the line, its vertices moved back to

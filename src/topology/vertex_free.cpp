@@ -104,8 +104,10 @@ std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& bas
 enum class Filtered_outcome { no_edge, edge, undecided };
 
 Interval in_double_range(const Interval& x) { return x; }
-Interval in_double_range(const Wide_interval& x) { return x.to_interval(); }  // infinite bounds beyond it
-Interval in_double_range(const Mpfr_interval& x) { return x.to_interval(); }
+template <class NT>
+Interval in_double_range(const NT& x) {  // Wide_interval, Mpfr_interval: infinite bounds beyond the range
+  return x.to_interval();
+}
 
 template <class NT>
 Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, const Site& o,
@@ -344,16 +346,16 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     Filtered_outcome filtered = Filtered_outcome::undecided;
     {
       Rounding_guard guard;
-      if (const std::optional<Vector4<Interval>> X = enclosed_canonical_point(t))
-        filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, seen);
+      const std::optional<Vector4<Interval>> X = enclosed_canonical_point(t);
+      if (X) filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, seen);
       const auto try_framed = [&](auto number) {
         using NT = decltype(number);
         if (filtered == Filtered_outcome::undecided)
           if (const std::optional<Framed_curve_point<NT>> W = framed_enclosed_canonical_point<NT>(t))
             filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, seen);
       };
-      try_framed(Wide_interval());
-      try_framed(Mpfr_interval());  // signs a hair from zero (a lattice one ulp off)
+      if (!X) try_framed(Wide_interval());  // its precision is the intervals': only where they left the range
+      try_framed(Mpfr_interval());           // signs a hair from zero (a lattice one ulp off)
     }
     if (filtered == Filtered_outcome::no_edge) return;
     if (filtered == Filtered_outcome::edge) {
