@@ -83,29 +83,41 @@ Field_point<Rational> Curve_point::coordinates<Rational>() const {
 
 template <>
 Field_point<Interval> Curve_point::coordinates<Interval>() const {
-  const std::optional<Cut_line<Interval>> line =
-      cut_line(trisector_->geometry<Interval>(), to_vector<Interval>(cut_), Interval(CGAL::to_interval(offset_)));
-  if (!line) throw Uncertain_sign();
-  const Cut_line<Interval>& l = *line;
-  Interval s;
-  if (certain_sign(l.A) != Sign::ZERO) {
-    const Interval root = root_ == Root::SINGLE ? Interval(0) : CGAL::sqrt(l.B * l.B - l.A * l.C);
-    s = (-l.B + Interval(static_cast<int>(root_)) * root) / l.A;
-  } else {
-    s = -l.C / (Interval(2) * l.B);
-  }
-  Field_point<Interval> p;
-  for (int j = 0; j < 4; ++j) p.X[j] = l.base[j] + s * l.direction[j];
-  return p;
+  if (!enclosure_) throw Uncertain_sign();
+  return *enclosure_;
 }
 
 namespace {
 
-// Which roots the cut leaves: none, SINGLE, or MINUS and PLUS, in NT (Interval throws when unsure).
+// The cut's line in intervals (throws Uncertain_sign where they cannot tell).
+std::optional<Cut_line<Interval>> interval_cut_line(const Trisector& trisector, const Vector4<Rational>& cut,
+                                                    const Rational& offset) {
+  return cut_line(trisector.geometry<Interval>(), to_vector<Interval>(cut), Interval(CGAL::to_interval(offset)));
+}
+
+// The point at `root` of the cut's line, in intervals; nothing where they cannot construct it.
+std::optional<Field_point<Interval>> point_at_root(const std::optional<Cut_line<Interval>>& line, Root root) {
+  if (!line) return std::nullopt;
+  try {
+    const Cut_line<Interval>& l = *line;
+    Interval s;
+    if (certain_sign(l.A) != Sign::ZERO) {
+      const Interval root_of_discriminant = root == Root::SINGLE ? Interval(0) : CGAL::sqrt(l.B * l.B - l.A * l.C);
+      s = (-l.B + Interval(static_cast<int>(root)) * root_of_discriminant) / l.A;
+    } else {
+      s = -l.C / (Interval(2) * l.B);
+    }
+    Field_point<Interval> p;
+    for (int j = 0; j < 4; ++j) p.X[j] = l.base[j] + s * l.direction[j];
+    return p;
+  } catch (const Uncertain_sign&) {
+    return std::nullopt;
+  }
+}
+
+// Which roots the cut's line leaves: none, SINGLE, or MINUS and PLUS, in NT (Interval throws when unsure).
 template <class NT>
-std::vector<Root> roots_of_cut(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset) {
-  const std::optional<Cut_line<NT>> line =
-      cut_line(trisector.geometry<NT>(), to_vector<NT>(cut), to_number<NT>(offset));
+std::vector<Root> roots_of_cut(const std::optional<Cut_line<NT>>& line) {
   if (!line) {
     if constexpr (std::is_same_v<NT, Interval>) throw Uncertain_sign();  // parallel only if exactly so
     return {};
@@ -122,20 +134,36 @@ std::vector<Root> roots_of_cut(const Trisector& trisector, const Vector4<Rationa
 
 }  // namespace
 
+Curve_point::Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root)
+    : trisector_(&trisector), cut_(cut), offset_(offset), root_(root) {
+  Rounding_guard guard;
+  try {
+    enclosure_ = point_at_root(interval_cut_line(trisector, cut, offset), root);
+  } catch (const Uncertain_sign&) {
+  }
+}
+
+Curve_point::Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root,
+                         std::optional<Field_point<Interval>> enclosure)
+    : trisector_(&trisector), cut_(cut), offset_(offset), root_(root), enclosure_(std::move(enclosure)) {}
+
 std::vector<Curve_point> curve_points(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset) {
   std::vector<Root> roots;
+  std::optional<Cut_line<Interval>> line;  // converted once, for the roots and the points
   bool decided = false;
   {
     Rounding_guard guard;
     try {
-      roots = roots_of_cut<Interval>(trisector, cut, offset);
+      line = interval_cut_line(trisector, cut, offset);
+      roots = roots_of_cut<Interval>(line);
       decided = true;
     } catch (const Uncertain_sign&) {
     }
   }
-  if (!decided) roots = roots_of_cut<Rational>(trisector, cut, offset);
+  if (!decided) roots = roots_of_cut<Rational>(cut_line(trisector.geometry<Rational>(), cut, offset));
   std::vector<Curve_point> points;
-  for (const Root r : roots) points.emplace_back(trisector, cut, offset, r);
+  Rounding_guard guard;
+  for (const Root r : roots) points.push_back(Curve_point(trisector, cut, offset, r, point_at_root(line, r)));
   return points;
 }
 

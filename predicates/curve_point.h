@@ -14,8 +14,7 @@ namespace apollonius {
 class Curve_point {
  public:
   // Precondition: `root` names an existing root of the cut (curve_points).
-  Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root)
-      : trisector_(&trisector), cut_(cut), offset_(offset), root_(root) {}
+  Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root);
 
   const Trisector& trisector() const { return *trisector_; }
   Root root() const { return root_; }
@@ -24,10 +23,19 @@ class Curve_point {
   Field_point<NT> coordinates() const;
 
  private:
+  // With its interval coordinates already known (curve_points).
+  Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root,
+              std::optional<Field_point<Interval>> enclosure);
+  friend std::vector<Curve_point> curve_points(const Trisector&, const Vector4<Rational>&, const Rational&);
+
   const Trisector* trisector_;
   Vector4<Rational> cut_;
   Rational offset_;
   Root root_;
+  // The interval coordinates, computed with the point: every use of a point asks for them first, and
+  // converting the rational cut to intervals on each request was most of their cost. Empty: intervals
+  // could not construct the point (coordinates<Interval> throws Uncertain_sign).
+  std::optional<Field_point<Interval>> enclosure_;
   // The exact coordinates, computed on first use, by any thread (computed_once.h).
   Computed_once<Field_point<Rational>> exact_;
 };
