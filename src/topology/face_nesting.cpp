@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <functional>
 #include <optional>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "predicates/rational_between.h"
 #include "predicates/rounding_guard.h"
@@ -53,37 +54,60 @@ Rational level_offset(const Vector3& e, const Site& o, const Rational& y) {
   return y - (e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z));
 }
 
-// e . v at a point of a trisector: an interval enclosure first (the whole line when intervals fail), the
-// exact value on first need, when two enclosures overlap.
+// A rational direction, with an interval enclosure of it: a level's enclosure costs no rational arithmetic.
+struct Level_direction {
+  Vector3 exact;
+  std::array<Interval, 3> enclosure;  // holds exact
+  explicit Level_direction(const Vector3& e) : exact(e) {
+    for (int k = 0; k < 3; ++k) enclosure[k] = Interval(CGAL::to_interval(e[k]));
+  }
+};
+
+// e . v at a point of a trisector (a vertex on it, or a curve point of it): an interval enclosure first
+// (the whole line when intervals fail), the exact value on first need, when two enclosures overlap.
 class Level_value {
  public:
   template <class P>
-  Level_value(const Trisector& t, const P& p, const Vector3& e) {
+  Level_value(const Trisector& t, const P& p, const Level_direction& e) : trisector_(&t), direction_(&e) {
+    if constexpr (std::is_same_v<P, Vertex>)
+      point_ = &p;
+    else
+      point_ = p;
     const Site& o = t.origin();
-    const Rational offset = e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z);
-    {
-      Rounding_guard guard;
-      try {
-        const Vector4<Rational> cut = level_cut(e);
-        const Vector4<Interval> y{Interval(CGAL::to_interval(cut[0])), Interval(CGAL::to_interval(cut[1])),
-                                  Interval(CGAL::to_interval(cut[2])), Interval(0)};
-        enclosure_ = euclidean_value(field_point_on<Interval>(t, p), y, Interval(CGAL::to_interval(offset)));
-      } catch (const Uncertain_sign&) {
-        enclosure_ = Interval::largest();
-      }
+    Rounding_guard guard;
+    try {
+      const std::array<Interval, 3>& x = e.enclosure;
+      const Vector4<Interval> y{x[0] / 2, x[1] / 2, x[2] / 2, Interval(0)};
+      const Interval offset = x[0] * Interval(o.x) + x[1] * Interval(o.y) + x[2] * Interval(o.z);
+      enclosure_ = euclidean_value(field_point_on<Interval>(t, p), y, offset);
+    } catch (const Uncertain_sign&) {
+      enclosure_ = Interval::largest();
     }
-    exact_ = [&t, p, e, offset]() { return euclidean_value(field_point_on<Rational>(t, p), level_cut(e), offset); };
   }
 
   const Interval& enclosure() const { return enclosure_; }
   const Root_number<Rational>& exact() const {
-    if (!value_) value_ = exact_();
+    if (!value_) {
+      const Site& o = trisector_->origin();
+      const Vector3& e = direction_->exact;
+      const Rational offset = e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z);
+      value_ = std::visit(
+          [&](const auto& p) {
+            if constexpr (std::is_pointer_v<std::decay_t<decltype(p)>>)
+              return euclidean_value(field_point_on<Rational>(*trisector_, *p), level_cut(e), offset);
+            else
+              return euclidean_value(field_point_on<Rational>(*trisector_, p), level_cut(e), offset);
+          },
+          point_);
+    }
     return *value_;
   }
 
  private:
+  const Trisector* trisector_;
+  const Level_direction* direction_;
+  std::variant<const Vertex*, Curve_point> point_;  // a vertex of the diagram, which outlives this
   Interval enclosure_;
-  std::function<Root_number<Rational>()> exact_;
   mutable std::optional<Root_number<Rational>> value_;
 };
 
@@ -176,30 +200,14 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   if (!found) throw std::logic_error("face nesting: no level direction crosses every edge of the pair");
   d = cross(n, e);
 
-  // Critical heights: the vertices' and the extreme points'.
-  std::vector<Level_value> heights;
-  std::vector<std::size_t> vertices_seen;  // a vertex ends several edges: one height
-  for (const Pair_edge& pe : pair_edges) {
-    throw_if_cancelled(cancellation);
-    const Trisector& t = *pe.trisector;
-    for (const std::optional<std::size_t>& v : {pe.edge->start, pe.edge->end}) {
-      if (!v || std::find(vertices_seen.begin(), vertices_seen.end(), *v) != vertices_seen.end()) continue;
-      vertices_seen.push_back(*v);
-      heights.emplace_back(t, diagram.vertices[*v].vertex, e);
-    }
-    // Where the tangent is level: the tangent at X is the direction of L Lorentz-orthogonal to X
-    // (trisector.h), and the level direction of L is N, Euclidean-orthogonal to R_b, R_c and (e / 2, 0)
-    // (one direction: L is not parallel to the levels); so <X, N> = 0, a cut from the input alone.
-    const Vector4<Rational> N = orthogonal_direction(relative_site<Rational>(t.origin(), t.sites()[1]).row,
-                                                     relative_site<Rational>(t.origin(), t.sites()[2]).row, level_cut(e));
-    for (const Curve_point& p : curve_points(t, {N[0], N[1], N[2], -N[3]}, Rational(0)))
-      if (on_sheet(p) && on_edge(pe, p, diagram)) heights.emplace_back(t, p, e);
-  }
-  std::sort(heights.begin(), heights.end(),
-            [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::NEGATIVE; });
-  heights.erase(std::unique(heights.begin(), heights.end(),
-                            [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::ZERO; }),
-                heights.end());
+  const Level_direction across(e), along(d);
+  const Vector4<Rational> level_plane = level_cut(e);
+  const auto sort_and_merge = [](std::vector<Level_value>& heights) {
+    std::sort(heights.begin(), heights.end(),
+              [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::NEGATIVE; });
+    const auto tie = [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::ZERO; };
+    heights.erase(std::unique(heights.begin(), heights.end(), tie), heights.end());
+  };
   // One line, sorted along d: the crossings of the pair's edges with the level e . v = y on the sheet.
   struct Crossing {
     Level_value abscissa;
@@ -210,8 +218,8 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
     std::vector<Crossing> crossings;
     for (std::size_t i = 0; i < pair_edges.size(); ++i) {
       const Trisector& t = *pair_edges[i].trisector;
-      for (const Curve_point& p : curve_points(t, level_cut(e), level_offset(e, t.origin(), y)))
-        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, d), i, p});
+      for (const Curve_point& p : curve_points(t, level_plane, level_offset(e, t.origin(), y)))
+        if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, along), i, p});
     }
     std::sort(crossings.begin(), crossings.end(),
               [](const Crossing& x, const Crossing& y) { return compare_levels(x.abscissa, y.abscissa) == Sign::NEGATIVE; });
@@ -225,22 +233,58 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
       if (s != a && s != b) third = s;
     return face_side(first_crossing.point, sites[a], sites[b], sites[third], e, d) == Sign::POSITIVE;
   };
-
   // One closed cycle alone (the usual nested pair: a ball between a and b cuts a hole in their face, or
-  // their face is a disc): the face is its inside or its outside. A level in the lowest slab lies strictly
-  // between the cycle's lowest and highest points, so its line crosses the cycle (which is connected), and
-  // at no critical height, so at every crossing it passes from one side to the other; the line's two ends
-  // lie outside the cycle. The face is bounded exactly when the line enters it at its first crossing: one
-  // line instead of one per slab (the tests check the sweep below agrees: lines = every_slab).
-  if (lines == Level_lines::fewest && components.size() == 1 && components.front()->closed && heights.size() >= 2) {
-    const std::vector<Crossing> crossings = crossings_at(level_between(heights[0], heights[1]));
+  // their face is a disc): the face is its inside or its outside. A level strictly between the cycle's
+  // lowest and highest points crosses it (it is connected); at a level that is no critical height the line
+  // passes from one side to the other at every crossing, and its two ends lie outside the cycle. The face is
+  // bounded exactly when the line enters it at its first crossing: one line instead of one per slab (the
+  // tests check the sweep below agrees: lines = every_slab).
+  const bool one_cycle = lines == Level_lines::fewest && components.size() == 1 && components.front()->closed;
+  const auto one_face = [&](const std::vector<Crossing>& crossings) {
     if (crossings.size() < 2 || crossings.size() % 2 != 0)
       throw std::logic_error("face nesting: a level line inside a closed cycle does not cross it in pairs");
-    Face_grouping one_face;
-    one_face.faces.push_back({0});
-    one_face.bounded.push_back(face_after(crossings.front()));
-    return one_face;
+    Face_grouping grouping;
+    grouping.faces.push_back({0});
+    grouping.bounded.push_back(face_after(crossings.front()));
+    return grouping;
+  };
+
+  // Critical heights: the vertices', then the extreme points'.
+  std::vector<Level_value> heights;
+  std::vector<std::size_t> vertices_seen;  // a vertex ends several edges: one height
+  for (const Pair_edge& pe : pair_edges) {
+    throw_if_cancelled(cancellation);
+    for (const std::optional<std::size_t>& v : {pe.edge->start, pe.edge->end}) {
+      if (!v || std::find(vertices_seen.begin(), vertices_seen.end(), *v) != vertices_seen.end()) continue;
+      vertices_seen.push_back(*v);
+      heights.emplace_back(*pe.trisector, diagram.vertices[*v].vertex, across);
+    }
   }
+  sort_and_merge(heights);
+  // A cycle through vertices at two heights or more: a level between the lowest two lies strictly inside the
+  // cycle's range, and it is no vertex's height. It is no extreme point's either when the line touches no
+  // edge (a double root, SINGLE; a transversal single root, where the cut's quadratic is linear, is taken
+  // as one too): then the extreme points, rational constructions that were most of this function's time,
+  // are not needed.
+  if (one_cycle && heights.size() >= 2) {
+    const std::vector<Crossing> crossings = crossings_at(level_between(heights[0], heights[1]));
+    const auto touches = [](const Crossing& c) { return c.point.root() == Root::SINGLE; };
+    if (std::none_of(crossings.begin(), crossings.end(), touches)) return one_face(crossings);
+  }
+  for (const Pair_edge& pe : pair_edges) {
+    const Trisector& t = *pe.trisector;
+    // Where the tangent is level: the tangent at X is the direction of L Lorentz-orthogonal to X
+    // (trisector.h), and the level direction of L is N, Euclidean-orthogonal to R_b, R_c and (e / 2, 0)
+    // (one direction: L is not parallel to the levels); so <X, N> = 0, a cut from the input alone.
+    const Vector4<Rational> N = orthogonal_direction(relative_site<Rational>(t.origin(), t.sites()[1]).row,
+                                                     relative_site<Rational>(t.origin(), t.sites()[2]).row,
+                                                     level_plane);
+    for (const Curve_point& p : curve_points(t, {N[0], N[1], N[2], -N[3]}, Rational(0)))
+      if (on_sheet(p) && on_edge(pe, p, diagram)) heights.emplace_back(t, p, across);
+  }
+  sort_and_merge(heights);
+  // The lowest slab lies strictly between the cycle's lowest and highest points, at no critical height.
+  if (one_cycle && heights.size() >= 2) return one_face(crossings_at(level_between(heights[0], heights[1])));
 
   std::vector<Rational> levels;
   if (heights.empty()) {

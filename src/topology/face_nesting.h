@@ -10,7 +10,8 @@
 //
 // Cost: O(k) heights and O(k) crossings per line for the k edges of the pair's components: O(k^2) exact
 // constructions, which is why it runs only where the components do not settle it alone; O(k) for one
-// closed cycle alone, which needs one line.
+// closed cycle alone, which needs one line, and no extreme point when its vertices lie at two heights or
+// more and the line between the lowest two touches no edge.
 #pragma once
 
 #include <vector>
