@@ -39,12 +39,15 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   auto start = Clock::now();
-  Diagram_topology topology = build_edges(sites, std::move(diagram), options);
+  Diagram_topology topology;
+  const Vertex_triples vertex_triples(sites.size(), diagram, options.cancellation);  // for both steps
+  topology.edges = edges_through_vertices(sites, diagram, vertex_triples, options.threads, options.cancellation);
+  topology.vertices = std::move(diagram);
   Topology_statistics& s = topology.statistics;
   s.edges_seconds = seconds(start);
   start = Clock::now();
-  Vertex_free_parts parts =
-      vertex_free_parts(sites, topology.vertices, topology.edges, regions, options.threads, options.cancellation);
+  Vertex_free_parts parts = vertex_free_parts(sites, vertex_triples, topology.edges, regions,
+                                              options.threads, options.cancellation);
   // Both lists sorted: merged in linear time.
   cancellable_sort(parts.edges.begin(), parts.edges.end(), options.cancellation, edge_precedes);
   const std::size_t through_vertices = topology.edges.size();

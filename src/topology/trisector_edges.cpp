@@ -4,15 +4,12 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <cstdint>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 
 #include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
-#include "diagram/flat_lists.h"
 #include "predicates/trisector_predicates.h"
 
 namespace apollonius {
@@ -79,35 +76,16 @@ void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shap
 
 std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram, int threads,
                                                  const Cancellation* cancellation) {
+  const Vertex_triples triples(sites.size(), diagram, cancellation);
+  return edges_through_vertices(sites, diagram, triples, threads, cancellation);
+}
+
+std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
+                                                 const Vertex_triples& triples, int threads,
+                                                 const Cancellation* cancellation) {
   // Every (triple of a vertex's tie set, vertex), grouped by triple: each trisector is built once, for
-  // all the vertices on it (a generic one has two). Written straight into buckets by smallest site (a
-  // counting pass first), then each bucket sorted: small entries, one pass over fresh memory; the list is
-  // a few times the vertices, and its first touch was most of this phase's time.
-  struct Entry {
-    std::array<Site_index, 3> triple;
-    std::uint32_t vertex;
-  };
-  if (diagram.vertices.size() > std::numeric_limits<std::uint32_t>::max())
-    throw std::length_error("edges_through_vertices: more than 2^32 vertices");
-  Flat_lists<Entry> by_first_site(
-      sites.size(),
-      [&](auto emit) {
-        for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
-          const std::vector<Site_index>& tie = diagram.vertices[v].tie_set;
-          for (std::size_t i = 0; i < tie.size(); ++i)
-            for (std::size_t j = i + 1; j < tie.size(); ++j)
-              for (std::size_t l = j + 1; l < tie.size(); ++l)
-                emit(tie[i], Entry{{tie[i], tie[j], tie[l]}, static_cast<std::uint32_t>(v)});
-        }
-      },
-      cancellation);
-  for (std::size_t s = 0; s < sites.size(); ++s) {
-    if (s % 4096 == 0) throw_if_cancelled(cancellation);
-    const auto bucket = by_first_site[s];
-    std::sort(bucket.begin(), bucket.end(),
-              [](const Entry& x, const Entry& y) { return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex); });
-  }
-  const std::vector<Entry>& entries = by_first_site.values();
+  // all the vertices on it (a generic one has two).
+  const std::vector<Vertex_triple>& entries = triples.all();
   std::vector<std::size_t> group_start;
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);

@@ -12,6 +12,7 @@
 #include "diagram/cancellation.h"
 #include "topology/topology.h"
 #include "topology/vertex_fan.h"
+#include "topology/vertex_triples.h"
 
 namespace apollonius {
 
@@ -19,6 +20,10 @@ namespace apollonius {
 // their curves; sorted as Diagram_topology's. Throws std::logic_error if the departures along some curve
 // do not alternate (leaving, arriving), which would be a defect. Checks cancellation (cancellation.h) once
 // per curve and per 4096 vertices.
+std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram,
+                                                 const Vertex_triples& triples, int threads,
+                                                 const Cancellation* cancellation = nullptr);
+// The same, with the vertices' triples built for it.
 std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram, int threads,
                                                  const Cancellation* cancellation = nullptr);
 

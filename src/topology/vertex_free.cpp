@@ -52,17 +52,6 @@ bool share(Items x, Items y) {
   return false;
 }
 
-bool share(Items x, Items y, Items z) {
-  while (x.first != x.last && y.first != y.last && z.first != z.last) {
-    const std::size_t top = std::max({*x.first, *y.first, *z.first});
-    if (*x.first == top && *y.first == top && *z.first == top) return true;
-    if (*x.first < top) ++x.first;
-    if (*y.first < top) ++y.first;
-    if (*z.first < top) ++z.first;
-  }
-  return false;
-}
-
 // Where the candidates were seen: the boxes (positions in regions.boxes); far: in a far field patch.
 // Inline: most candidates are seen in a few boxes, and there are a million candidates on a large input.
 struct Occurrences {
@@ -202,9 +191,35 @@ class Located_witness {
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads,
                                     const Cancellation* cancellation, std::size_t all_triples_up_to) {
-  const Items_by_site vertices_of_site = items_by_site(
-      sites.size(), diagram.vertices.size(), [&](std::size_t v) -> const auto& { return diagram.vertices[v].tie_set; },
+  return vertex_free_parts(sites, Vertex_triples(sites.size(), diagram, cancellation), edges, regions, threads,
+                           cancellation, all_triples_up_to);
+}
+
+Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex_triples& vertex_triples,
+                                    const std::vector<Diagram_edge>& edges,
+                                    const Octree_regions& regions, int threads, const Cancellation* cancellation,
+                                    std::size_t all_triples_up_to) {
+  // A triple of three sites with a common vertex has its edges through that vertex already, and a pair with
+  // a common edge has a face with a boundary: left out as they are seen, before the occurrences are sorted
+  // (on BALL_SMALL_10000, 95% of the triples' occurrences and 99% of the pairs'). The pairs of escaping sites
+  // on the edges through vertices, under their smaller site, sorted:
+  std::vector<bool> escapes(sites.size(), false);
+  for (Site_index s : regions.escaping) escapes[s] = true;
+  Flat_lists<Site_index> escaping_pairs_on_edges(
+      sites.size(),
+      [&](auto emit) {
+        for (const Diagram_edge& e : edges)
+          for (std::size_t i = 0; i < e.tie_set.size(); ++i)
+            if (escapes[e.tie_set[i]])
+              for (std::size_t j = i + 1; j < e.tie_set.size(); ++j)
+                if (escapes[e.tie_set[j]]) emit(e.tie_set[i], e.tie_set[j]);
+      },
       cancellation);
+  for (Site_index s : regions.escaping) std::sort(escaping_pairs_on_edges[s].begin(), escaping_pairs_on_edges[s].end());
+  const auto on_an_edge = [&](Site_index a, Site_index b) {  // a < b, both escaping
+    const auto others = escaping_pairs_on_edges[a];
+    return std::binary_search(others.begin(), others.end(), b);
+  };
 
   // Candidate triples and pairs, where each was seen: (set, box) occurrences, sorted and grouped.
   // Box positions in 32 bits: the occurrence lists are the largest memory of this phase.
@@ -218,8 +233,6 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
   // unbounded, so an edge-free face (the whole sheet) has two escaping sites; so has a vertex-free
   // hyperbola branch or parabola (a whole component of the curve) three. On proteins 4% of the candidate
   // triples and 16% of the pair occurrences pass this filter: only ellipses need more.
-  std::vector<bool> escapes(sites.size(), false);
-  for (Site_index s : regions.escaping) escapes[s] = true;
   // So a triple that does not all escape can only be an ellipse, which it is not when its rows' Gram
   // determinant is certainly positive (trisector_rows.h, in intervals from the box's pairwise power gaps):
   // such a triple is left out before the occurrences are sorted. On 1j3h 95% of the occurrences go.
@@ -270,8 +283,10 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     };
     for (std::size_t i = 0; i < size; ++i)
       for (std::size_t j = i + 1; j < size; ++j)
-        if (escapes[set[i]] && escapes[set[j]]) pair_seen.push_back({{set[i], set[j]}, box});
+        if (escapes[set[i]] && escapes[set[j]] && !on_an_edge(set[i], set[j]))
+          pair_seen.push_back({{set[i], set[j]}, box});
     const auto offer = [&](std::size_t i, std::size_t j, std::size_t k) {
+      if (vertex_triples.contains({set[i], set[j], set[k]})) return;
       if ((escapes[set[i]] && escapes[set[j]] && escapes[set[k]]) || maybe_closed(i, j, k))
         triple_seen.push_back({{set[i], set[j], set[k]}, box});
     };
@@ -321,10 +336,8 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
     seen.shrink_to_fit();
     return groups;
   };
-  // A triple of three sites with a common vertex has its edges through that vertex already.
-  const auto triples = grouped(triple_seen, [](const auto& o) { return o.first[0]; }, [&](const Triple& t) {
-    return share(vertices_of_site[t[0]], vertices_of_site[t[1]], vertices_of_site[t[2]]);
-  });
+  const auto triples =
+      grouped(triple_seen, [](const auto& o) { return o.first[0]; }, [](const Triple&) { return false; });
 
   const auto in_root = [&](const Curve_point& w) {
     return regions.has_octree && curve_point_in_box(w, regions.root);
@@ -400,12 +413,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagra
                                 [](const Diagram_edge& x, const Diagram_edge& y) { return x.tie_set == y.tie_set; }),
                     parts.edges.end());
 
-  // The edges through vertices, then the vertex-free ones.
+  // The pairs on edges through vertices were left out as they were seen: those on the vertex-free ones now.
   const Items_by_site edges_of_site = items_by_site(
-      sites.size(), edges.size() + parts.edges.size(),
-      [&](std::size_t e) -> const auto& { return (e < edges.size() ? edges[e] : parts.edges[e - edges.size()]).tie_set; },
+      sites.size(), parts.edges.size(), [&](std::size_t e) -> const auto& { return parts.edges[e].tie_set; },
       cancellation);
-  const auto pairs = grouped(pair_seen, [](const auto& o) { return o.first.first; }, [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
+  const auto pairs = grouped(pair_seen, [](const auto& o) { return o.first.first; },
+                             [&](const Pair& p) { return share(edges_of_site[p.first], edges_of_site[p.second]); });
   parts.candidate_pairs = pairs.size();
   for (const auto& [pair, seen] : pairs) {
     throw_if_cancelled(cancellation);

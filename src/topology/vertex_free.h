@@ -40,6 +40,7 @@
 #include "diagram/cancellation.h"
 #include "octree/octree_diagram.h"
 #include "topology/topology.h"
+#include "topology/vertex_triples.h"
 
 namespace apollonius {
 
@@ -57,6 +58,12 @@ inline constexpr std::size_t kAllTriplesUpTo = 64;
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions,
                                     int threads = 1, const Cancellation* cancellation = nullptr,
+                                    std::size_t all_triples_up_to = kAllTriplesUpTo);
+// The same, with the vertices' triples (vertex_triples.h) of the diagram, built once for the edges too.
+Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex_triples& vertex_triples,
+                                    const std::vector<Diagram_edge>& edges,
+                                    const Octree_regions& regions, int threads = 1,
+                                    const Cancellation* cancellation = nullptr,
                                     std::size_t all_triples_up_to = kAllTriplesUpTo);
 
 }  // namespace apollonius
