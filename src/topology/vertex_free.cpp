@@ -237,41 +237,70 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
   // determinant is certainly positive (trisector_rows.h, in intervals from the box's pairwise power gaps):
   // such a triple is left out before the occurrences are sorted. On 1j3h 95% of the occurrences go.
   Pairwise_gaps gaps;
-  // The triples of a set of more than all_triples_up_to sites: those whose edges are edges of the set's
-  // lifted triangulation, and those with a site whose lift is no vertex of it (vertex_free.h). Without an
-  // octree (the reference) every triple.
+  // The triples of a set of more than all_triples_up_to sites (a large set): the triangles of the lifted
+  // triangulation of the union of all large sets, within the set, and those with a site whose lift is no
+  // vertex of it; its pairs likewise, the edges and those with such a site (vertex_free.h). One triangulation
+  // for all: thousands of boxes of a hundred sites tied along an axis took one each. Without an octree (the
+  // reference) every triple and pair.
   const std::size_t largest_with_all_triples =
       regions.has_octree ? all_triples_up_to : std::numeric_limits<std::size_t>::max();
+  std::vector<Site_index> in_large_sets;
+  const auto gather_if_large = [&](const auto& set) {
+    if (set.size() > largest_with_all_triples) in_large_sets.insert(in_large_sets.end(), set.begin(), set.end());
+  };
+  for (const Octree_regions::Box& box : regions.boxes) gather_if_large(box.sites);
+  for (const std::vector<Site_index>& set : regions.far_sets) gather_if_large(set);
+  std::sort(in_large_sets.begin(), in_large_sets.end());
+  in_large_sets.erase(std::unique(in_large_sets.begin(), in_large_sets.end()), in_large_sets.end());
+  const Lifted_triangulation lifts = in_large_sets.empty() ? Lifted_triangulation{}
+                                                           : lifted_triangulation(sites, in_large_sets, cancellation);
+  std::vector<bool> in_set(in_large_sets.empty() ? 0 : sites.size(), false);  // the large set being listed
+  std::vector<Site_index> unplaced_in_set;
   std::vector<Triple> triangulated;
-  const auto triangulated_triples = [&](const auto& set) {
+  std::vector<Pair> triangulated_pairs;
+  const auto list_triangulated = [&](const auto& set) {  // set: ascending, in in_large_sets
     triangulated.clear();
-    const Lifted_triangulation lifts =
-        lifted_triangulation(sites, std::vector<Site_index>(set.begin(), set.end()), cancellation);
-    for (const Site_index a : lifts.sites) {
+    triangulated_pairs.clear();
+    unplaced_in_set.clear();
+    for (const Site_index s : set) in_set[s] = true;
+    for (const Site_index s : set)
+      if (std::binary_search(lifts.unplaced.begin(), lifts.unplaced.end(), s)) unplaced_in_set.push_back(s);
+    for (const Site_index a : set) {
       const std::vector<Site_index>& around_a = lifts.neighbours_of(a);
       for (auto b = std::upper_bound(around_a.begin(), around_a.end(), a); b != around_a.end(); ++b) {
+        if (!in_set[*b]) continue;
+        triangulated_pairs.push_back({a, *b});
         const std::vector<Site_index>& around_b = lifts.neighbours_of(*b);
         std::vector<Site_index>::const_iterator c = std::upper_bound(around_b.begin(), around_b.end(), *b);
         for (auto d = b + 1; d != around_a.end() && c != around_b.end();) {  // common neighbours above b
           if (*d < *c) ++d;
           else if (*c < *d) ++c;
-          else triangulated.push_back({a, *b, *d}), ++c, ++d;
+          else {
+            if (in_set[*d]) triangulated.push_back({a, *b, *d});
+            ++c, ++d;
+          }
         }
       }
     }
-    for (std::size_t u = 0; u < lifts.unplaced.size(); ++u)  // each triple once: by its first unplaced site
-      for (std::size_t i = 0; i < lifts.sites.size(); ++i)
-        for (std::size_t j = i + 1; j < lifts.sites.size(); ++j) {
-          Triple t{lifts.unplaced[u], lifts.sites[i], lifts.sites[j]};
-          if (t[0] == t[1] || t[0] == t[2]) continue;
-          const auto earlier_unplaced = [&](Site_index s) {
-            const auto end = lifts.unplaced.begin() + static_cast<std::ptrdiff_t>(u);
-            return std::binary_search(lifts.unplaced.begin(), end, s);
-          };
-          if (earlier_unplaced(t[1]) || earlier_unplaced(t[2])) continue;
+    // Each pair and triple with an unplaced site once: by its first unplaced site.
+    for (std::size_t u = 0; u < unplaced_in_set.size(); ++u) {
+      const auto earlier_unplaced = [&](Site_index s) {
+        const auto end = unplaced_in_set.begin() + static_cast<std::ptrdiff_t>(u);
+        return std::binary_search(unplaced_in_set.begin(), end, s);
+      };
+      const Site_index first = unplaced_in_set[u];
+      for (std::size_t i = 0; i < set.size(); ++i) {
+        if (set[i] == first || earlier_unplaced(set[i])) continue;
+        triangulated_pairs.push_back(std::minmax(first, set[i]));
+        for (std::size_t j = i + 1; j < set.size(); ++j) {
+          if (set[j] == first || earlier_unplaced(set[j])) continue;
+          Triple t{first, set[i], set[j]};
           std::sort(t.begin(), t.end());
           triangulated.push_back(t);
         }
+      }
+    }
+    for (const Site_index s : set) in_set[s] = false;
   };
   const auto note = [&](const auto& set, Box_position box) {
     throw_if_cancelled(cancellation);
@@ -281,10 +310,9 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       if (!gaps_known) gaps.assign(sites, set), gaps_known = true;
       return gaps.maybe_closed(i, j, k);
     };
-    for (std::size_t i = 0; i < size; ++i)
-      for (std::size_t j = i + 1; j < size; ++j)
-        if (escapes[set[i]] && escapes[set[j]] && !on_an_edge(set[i], set[j]))
-          pair_seen.push_back({{set[i], set[j]}, box});
+    const auto offer_pair = [&](Site_index a, Site_index b) {  // a < b
+      if (escapes[a] && escapes[b] && !on_an_edge(a, b)) pair_seen.push_back({{a, b}, box});
+    };
     const auto offer = [&](std::size_t i, std::size_t j, std::size_t k) {
       if (vertex_triples.contains({set[i], set[j], set[k]})) return;
       if ((escapes[set[i]] && escapes[set[j]] && escapes[set[k]]) || maybe_closed(i, j, k))
@@ -292,29 +320,33 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     };
     if (size <= largest_with_all_triples) {
       for (std::size_t i = 0; i < size; ++i)
+        for (std::size_t j = i + 1; j < size; ++j) offer_pair(set[i], set[j]);
+      for (std::size_t i = 0; i < size; ++i)
         for (std::size_t j = i + 1; j < size; ++j)
           for (std::size_t k = j + 1; k < size; ++k) offer(i, j, k);
       return;
     }
-    triangulated_triples(set);
+    list_triangulated(set);
+    for (const Pair& p : triangulated_pairs) offer_pair(p.first, p.second);
     const auto position = [&](Site_index s) {
       return static_cast<std::size_t>(std::lower_bound(set.begin(), set.end(), s) - set.begin());
     };
     for (const Triple& t : triangulated) offer(position(t[0]), position(t[1]), position(t[2]));
   };
-  // Reserved up front (pairs exactly, triples at most): doubling a vector of tens of millions of occurrences
-  // copies it without a check. The triples of a triangulated set are not known before: it grows for them.
+  // Reserved up front (at most): doubling a vector of tens of millions of occurrences copies it without a
+  // check. A large set's are not known before: they grow for them.
   std::size_t pair_count = 0, triple_count = 0;
   const auto count = [&](const auto& set) {
     const std::size_t k = set.size();
+    if (k > largest_with_all_triples) return;
     const std::size_t e = std::count_if(set.begin(), set.end(), [&](Site_index s) { return escapes[s]; });
     pair_count += e * (e - 1) / 2;
-    if (k <= largest_with_all_triples) triple_count += k * (k - 1) * (k - 2) / 6;
+    triple_count += k * (k - 1) * (k - 2) / 6;
   };
   for (const Octree_regions::Box& box : regions.boxes) count(box.sites);
   for (const std::vector<Site_index>& set : regions.far_sets) count(set);
   pair_seen.reserve(pair_count);
-  triple_seen.reserve(triple_count);  // an upper bound: the pages left out are never touched
+  triple_seen.reserve(triple_count);  // the pages left out are never touched
   {
     Rounding_guard guard;  // for the intervals of maybe_closed
     for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, static_cast<Box_position>(b));

@@ -17,21 +17,26 @@
 // The octree keeps only the boxes that hold two escaping sites or three that may have a closed trisector
 // (Octree_regions): a box that holds the tie set of a vertex-free part is among them, by the last point
 // (its sites are escaping, or an ellipse's), so the candidates and the box that contains W are unchanged.
-// A set of more than all_triples_up_to sites (a far field patch of hundreds of escaping sites on a deep
-// input made 83 million triples) offers only the triples whose three edges are edges of the triangulation of
-// its sites' lifts (lifted_triangulation.h), and those with a site whose lift is no vertex of it. That loses
-// no candidate: where W is a point of an edge of the triple T, T owns W and every other site of a set
-// holding T and W (a box containing W, or the patch whose cone does) is strictly farther, so, by the
-// argument of lifted_triangulation.h for three sites instead of four, the lifts of T span a cell of the
-// regular subdivision of the set's lifts (three collinear lifts tie on a whole sheet, never on a curve
-// alone), which the triangulation refines: a triangle whose edges are edges of it. A curve of k > 3 tied
-// sites is every one of its triples' whole trisector: it is found from any triple offered, and kept once.
-// The reference (no octree) offers every triple, so that it stays the simple computation the tests trust.
+// A set of more than all_triples_up_to sites, a large set (a far field patch of hundreds of escaping sites
+// on a deep input made 83 million triples), offers only the triples whose three edges are edges of the
+// triangulation of the lifts (lifted_triangulation.h) of U, the union of all large sets, and those with a
+// site whose lift is no vertex of it; and only the pairs that are edges of it, or have such a site. That
+// loses no candidate: where W is a point of an edge of the triple T, T owns W and every other site is
+// strictly farther, those of U among them, so, by the argument of lifted_triangulation.h for three sites
+// instead of four, the lifts of T span a cell of the regular subdivision of U's lifts (three collinear lifts
+// tie on a whole sheet, never on a curve alone), which the triangulation refines: a triangle whose edges are
+// edges of it, offered by a large set holding T and W (a box containing W, or the patch whose cone does);
+// for a whole sheet of a and b, at its point between them, the same for two sites (two lifts of sites
+// that are not hidden differ). A curve of k > 3 tied sites is every one of its triples' whole trisector:
+// it is found from any triple offered, and kept once. One triangulation serves every large set: on balls
+// tied along an axis, thousands of boxes of a hundred sites each took one apiece. The reference (no octree)
+// offers every triple and pair, so that it stays the simple computation the tests trust.
 // Cost: O(k^3) triples per box of k <= all_triples_up_to sites, each one interval test unless its sites all
-// escape; O(k log k) expected for the triangulation of a larger set, plus its triangles (O(k) to O(k^2))
-// and k^2 per site whose lift is no vertex; those kept are sorted and grouped; each candidate with no
-// vertex costs one classification, and those that pass the escaping test one witness, filtered (in
-// intervals, then in wide intervals where those leave the double range), tested in parallel with `threads`.
+// escape; O(u log u) expected for the triangulation of U's u sites, plus, per large set, its triangles and
+// edges within the set (O(k) to O(k^2)) and k^2 per site whose lift is no vertex; those kept are sorted and
+// grouped; each candidate with no vertex costs one classification, and those that pass the escaping test
+// one witness, filtered (in intervals, then in wide intervals where those leave the double range), tested
+// in parallel with `threads`.
 #pragma once
 
 #include <utility>
@@ -54,7 +59,10 @@ struct Vertex_free_parts {
 // reference, no box and every active site in one far set). Checks cancellation (cancellation.h) once per
 // box or far set whose candidates it lists, per 4096 candidates grouped, and per candidate tested.
 // `all_triples_up_to`: the largest set of an octree whose triples are all offered (tests lower it to compare).
-inline constexpr std::size_t kAllTriplesUpTo = 64;
+// Eight: C(8, 3) = 56 triples, about as many as a triangulation's triangles there. Proteins and random balls
+// have no larger set, or a few; boxes of 13 to 64 tied sites (lattices, balls on one circle) gave tens of
+// millions of triples at 64 (lattice 4,000: 9.5 s and 1.6 GB for the diagram, 0.9 s and 47 MB at eight).
+inline constexpr std::size_t kAllTriplesUpTo = 8;
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions,
                                     int threads = 1, const Cancellation* cancellation = nullptr,

@@ -1,6 +1,7 @@
-// vertex_free_parts (topology/vertex_free.h) offers the candidate triples of an octree set of more than
-// kAllTriplesUpTo sites from the edges of the set's lifted triangulation. A bound of 4 sends every larger set
-// that way: the vertex-free parts must equal those found from every triple, on every generator family. A
+// vertex_free_parts (topology/vertex_free.h) offers the candidate triples and pairs of an octree set of more
+// than kAllTriplesUpTo sites from the lifted triangulation of the union of such sets. A bound of 4 sends every
+// larger set that way: the vertex-free parts must equal those found from every triple and pair, on every
+// generator family. A
 // failure prints the family, size and seed (`apollonius3d generate KIND --n N --seed S` writes that input).
 // APOLLONIUS_VERTEX_FREE_SEEDS sets the seeds per family and size, APOLLONIUS_DIFFERENTIAL_TIME_LIMIT the
 // seconds allowed per input.
@@ -45,7 +46,7 @@ constexpr std::size_t kEveryTriple = std::numeric_limits<std::size_t>::max();
 TEST_CASE("vertex-free parts from the triples of lifted triangulations equal those from every triple") {
   const auto seeds = static_cast<std::uint64_t>(from_environment("APOLLONIUS_VERTEX_FREE_SEEDS", 3));
   const double time_limit = from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60);
-  std::size_t inputs = 0, undecided = 0, large_sets = 0, edges = 0, closed = 0, sheets = 0, fewer = 0;
+  std::size_t inputs = 0, undecided = 0, large_sets = 0, edges = 0, closed = 0, sheets = 0, fewer = 0, fewer_pairs = 0;
   for (const Site_family_description& f : kSiteFamilies) {
     // Fewer sites where the topology is slow (deep octrees, long exact numbers).
     const bool slow = f.family == Site_family::wide_range || f.family == Site_family::lattice_noise;
@@ -77,7 +78,9 @@ TEST_CASE("vertex-free parts from the triples of lifted triangulations equal tho
         for (std::size_t e = 0; e < every.edges.size(); ++e) CHECK(same(triangulated.edges[e], every.edges[e]));
         CHECK(triangulated.sheets == every.sheets);
         CHECK(triangulated.candidate_triples <= every.candidate_triples);
+        CHECK(triangulated.candidate_pairs <= every.candidate_pairs);
         fewer += triangulated.candidate_triples < every.candidate_triples;
+        fewer_pairs += triangulated.candidate_pairs < every.candidate_pairs;
         for (const Octree_regions::Box& box : regions.boxes) large_sets += box.sites.size() > 4;
         for (const std::vector<Site_index>& set : regions.far_sets) large_sets += set.size() > 4;
         edges += every.edges.size();
@@ -87,11 +90,13 @@ TEST_CASE("vertex-free parts from the triples of lifted triangulations equal tho
     }
   }
   MESSAGE(inputs << " inputs (" << undecided << " with a tie not decided), " << large_sets
-                 << " sets of more than 4 sites; " << fewer << " inputs with fewer candidates; vertex-free: " << edges
+                 << " sets of more than 4 sites; " << fewer << " inputs with fewer candidate triples, " << fewer_pairs
+                 << " with fewer pairs; vertex-free: " << edges
                  << " edges (" << closed << " closed), " << sheets << " whole sheets");
   CHECK(inputs > 100);
   CHECK(large_sets > 100);
   CHECK(fewer > 10);  // the triangulation leaves triples out, and the parts stay the same
+  CHECK(fewer_pairs > 10);
   CHECK(closed > 0);
   CHECK(edges > closed);
   CHECK(sheets > 0);
@@ -109,4 +114,26 @@ TEST_CASE("the reference offers every triple whatever the bound") {
   const Vertex_free_parts bounded = vertex_free_parts(sites, topology.vertices, topology.edges, regions, 1, nullptr, 4);
   CHECK(bounded.candidate_triples == every.candidate_triples);
   CHECK(every.candidate_triples > 0);
+}
+
+TEST_CASE("whole sheets from the lifted triangulation's edges: balls centred on one line") {
+  // Balls of one radius: every face is the whole plane between two neighbours on the line, and the octree's
+  // boxes along the line hold many of them. A bound of 4 finds each from the union's edges.
+  for (const std::size_t n : {10, 30, 60}) {
+    CAPTURE(n);
+    std::vector<Site> sites;
+    for (std::size_t k = 0; k < n; ++k)
+      sites.push_back({4.0 * static_cast<double>(k) + (k % 2 == 0 ? 0.25 : 0.0), 0, 0, 1});
+    Octree_regions regions;
+    Octree_options options;
+    options.regions = &regions;
+    const Diagram_topology topology = build_edges(sites, octree_diagram(sites, options));
+    const Vertex_free_parts every =
+        sorted(vertex_free_parts(sites, topology.vertices, topology.edges, regions, 1, nullptr, kEveryTriple));
+    const Vertex_free_parts triangulated =
+        sorted(vertex_free_parts(sites, topology.vertices, topology.edges, regions, 1, nullptr, 4));
+    CHECK(every.sheets.size() == n - 1);
+    CHECK(triangulated.sheets == every.sheets);
+    CHECK(triangulated.candidate_pairs < every.candidate_pairs);
+  }
 }
