@@ -18,6 +18,7 @@
 #include "reference/brute_force_diagram.h"
 #include "reference/site_generators.h"
 #include "topology/build_topology.h"
+#include "topology/validate_topology.h"
 #include "topology/vertex_free.h"
 
 using namespace apollonius;
@@ -136,4 +137,26 @@ TEST_CASE("whole sheets from the lifted triangulation's edges: balls centred on 
     CHECK(triangulated.sheets == every.sheets);
     CHECK(triangulated.candidate_pairs < every.candidate_pairs);
   }
+}
+
+TEST_CASE("balls on one circle with mixed weights: thousands of tied boxes share one triangulation") {
+  // Regression: `generate circle-mixed --n 300 --seed 2` made 4,111 octree sets of 65 to 171 tied sites,
+  // each triangulated on its own (past 300 s), and 60 million triple occurrences from the smaller ones.
+  const double time_limit = from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60);
+  const std::vector<Site> sites = generate_sites(Site_family::circle_mixed, 300, 2);
+  const auto start = std::chrono::steady_clock::now();
+  Octree_regions regions;
+  Octree_options options;
+  options.regions = &regions;
+  const Diagram_topology topology = build_topology(sites, octree_diagram(sites, options), regions);
+  validate_topology(sites, topology);
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < time_limit);
+  std::size_t large_sets = 0;
+  for (const Octree_regions::Box& box : regions.boxes) large_sets += box.sites.size() > 64;
+  CHECK(large_sets > 1000);
+  // No vertex: every edge is a closed curve or a curve infinite both ways (the release build's counts).
+  CHECK(topology.vertices.vertices.empty());
+  CHECK(topology.edges.size() == 65);
+  CHECK(topology.faces.size() == 242);
+  CHECK(topology.cells.size() == 178);
 }
