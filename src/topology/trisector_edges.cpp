@@ -30,14 +30,20 @@ std::string describe(const std::array<Site_index, 3>& triple) {
 void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shape shape, const Diagram& diagram,
                      std::vector<Departure_on_curve>& on_curve, std::vector<Diagram_edge>& out) {
   // Along the curve; at one vertex the arriving edge (backward) comes before the leaving one.
-  std::sort(on_curve.begin(), on_curve.end(), [&](const Departure_on_curve& x, const Departure_on_curve& y) {
+  const auto before = [&](const Departure_on_curve& x, const Departure_on_curve& y) {
     if (x.vertex != y.vertex) {
       const Sign s = compare_along_trisector(trisector, diagram.vertices[x.vertex].vertex, diagram.vertices[y.vertex].vertex);
       if (s != Sign::ZERO) return s == Sign::NEGATIVE;
       throw std::logic_error("two vertices at one point of the trisector " + describe(trisector.indices()));
     }
     return x.direction < y.direction;
-  });
+  };
+  // Two departures (nearly every curve): one comparison, where the insertion sort makes two.
+  if (on_curve.size() == 2) {
+    if (before(on_curve[1], on_curve[0])) std::swap(on_curve[0], on_curve[1]);
+  } else {
+    std::sort(on_curve.begin(), on_curve.end(), before);
+  }
   const std::size_t n = on_curve.size();
   const bool closed = kind == Trisector_kind::ellipse;
   if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola)

@@ -1,9 +1,10 @@
 #include "topology/vertex_triples.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
-#include <tuple>
+#include <utility>
 
 namespace apollonius {
 namespace {
@@ -29,9 +30,12 @@ Flat_lists<Vertex_triple> sorted_by_first_site(std::size_t site_count, const Dia
   for (std::size_t s = 0; s < site_count; ++s) {
     if (s % 4096 == 0) throw_if_cancelled(cancellation);
     const auto bucket = lists[s];
-    std::sort(bucket.begin(), bucket.end(), [](const Vertex_triple& x, const Vertex_triple& y) {
-      return std::tie(x.triple, x.vertex) < std::tie(y.triple, y.vertex);
-    });
+    // One bucket shares its first site: the rest of (triple, vertex) as two 64-bit keys.
+    const auto key = [](const Vertex_triple& x) {
+      return std::pair{std::uint64_t{x.triple[1]} << 32 | x.triple[2], x.vertex};
+    };
+    std::sort(bucket.begin(), bucket.end(),
+              [&](const Vertex_triple& x, const Vertex_triple& y) { return key(x) < key(y); });
   }
   return lists;
 }
