@@ -132,16 +132,21 @@ std::vector<Root> roots_of_cut(const std::optional<Cut_line<NT>>& line) {
   return {};
 }
 
+// The point's interval coordinates, on their own (curve_points has the line already).
+std::optional<Field_point<Interval>> enclosure_of(const Trisector& trisector, const Vector4<Rational>& cut,
+                                                  const Rational& offset, Root root) {
+  Rounding_guard guard;
+  try {
+    return point_at_root(interval_cut_line(trisector, cut, offset), root);
+  } catch (const Uncertain_sign&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 Curve_point::Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root)
-    : trisector_(&trisector), cut_(cut), offset_(offset), root_(root) {
-  Rounding_guard guard;
-  try {
-    enclosure_ = point_at_root(interval_cut_line(trisector, cut, offset), root);
-  } catch (const Uncertain_sign&) {
-  }
-}
+    : Curve_point(trisector, cut, offset, root, enclosure_of(trisector, cut, offset, root)) {}
 
 Curve_point::Curve_point(const Trisector& trisector, const Vector4<Rational>& cut, const Rational& offset, Root root,
                          std::optional<Field_point<Interval>> enclosure)

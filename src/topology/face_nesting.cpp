@@ -54,11 +54,13 @@ Rational level_offset(const Vector3& e, const Site& o, const Rational& y) {
   return y - (e[0] * Rational(o.x) + e[1] * Rational(o.y) + e[2] * Rational(o.z));
 }
 
-// A rational direction, with an interval enclosure of it: a level's enclosure costs no rational arithmetic.
+// A rational direction e, its levels' cut (level_cut) and an interval enclosure of it: a level's enclosure
+// costs no rational arithmetic.
 struct Level_direction {
   Vector3 exact;
+  Vector4<Rational> cut;
   std::array<Interval, 3> enclosure;  // holds exact
-  explicit Level_direction(const Vector3& e) : exact(e) {
+  explicit Level_direction(const Vector3& e) : exact(e), cut(level_cut(e)) {
     for (int k = 0; k < 3; ++k) enclosure[k] = Interval(CGAL::to_interval(e[k]));
   }
 };
@@ -94,9 +96,9 @@ class Level_value {
       value_ = std::visit(
           [&](const auto& p) {
             if constexpr (std::is_pointer_v<std::decay_t<decltype(p)>>)
-              return euclidean_value(field_point_on<Rational>(*trisector_, *p), level_cut(e), offset);
+              return euclidean_value(field_point_on<Rational>(*trisector_, *p), direction_->cut, offset);
             else
-              return euclidean_value(field_point_on<Rational>(*trisector_, p), level_cut(e), offset);
+              return euclidean_value(field_point_on<Rational>(*trisector_, p), direction_->cut, offset);
           },
           point_);
     }
@@ -201,7 +203,6 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   d = cross(n, e);
 
   const Level_direction across(e), along(d);
-  const Vector4<Rational> level_plane = level_cut(e);
   const auto sort_and_merge = [](std::vector<Level_value>& heights) {
     std::sort(heights.begin(), heights.end(),
               [](const Level_value& x, const Level_value& y) { return compare_levels(x, y) == Sign::NEGATIVE; });
@@ -218,7 +219,7 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
     std::vector<Crossing> crossings;
     for (std::size_t i = 0; i < pair_edges.size(); ++i) {
       const Trisector& t = *pair_edges[i].trisector;
-      for (const Curve_point& p : curve_points(t, level_plane, level_offset(e, t.origin(), y)))
+      for (const Curve_point& p : curve_points(t, across.cut, level_offset(e, t.origin(), y)))
         if (on_sheet(p) && on_edge(pair_edges[i], p, diagram)) crossings.push_back({Level_value(t, p, along), i, p});
     }
     std::sort(crossings.begin(), crossings.end(),
@@ -278,7 +279,7 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
     // (one direction: L is not parallel to the levels); so <X, N> = 0, a cut from the input alone.
     const Vector4<Rational> N = orthogonal_direction(relative_site<Rational>(t.origin(), t.sites()[1]).row,
                                                      relative_site<Rational>(t.origin(), t.sites()[2]).row,
-                                                     level_plane);
+                                                     across.cut);
     for (const Curve_point& p : curve_points(t, {N[0], N[1], N[2], -N[3]}, Rational(0)))
       if (on_sheet(p) && on_edge(pe, p, diagram)) heights.emplace_back(t, p, across);
   }

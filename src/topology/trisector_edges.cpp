@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 
 #include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
