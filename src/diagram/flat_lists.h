@@ -26,6 +26,7 @@ class Flat_lists {
 
   // emit_all(emit) calls emit(key, value) for every value, with key < key_count, the same way each time
   // it is called (twice). Checks cancellation every 4096 values of each pass.
+  Flat_lists() : first_(1, 0) {}  // no key
   template <class Emit_all>
   Flat_lists(std::size_t key_count, Emit_all emit_all, const Cancellation* cancellation = nullptr)
       : first_(key_count + 1, 0) {

@@ -40,7 +40,7 @@ Diagram_topology build_topology(const std::vector<Site>& sites, Diagram diagram,
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   auto start = Clock::now();
   Diagram_topology topology;
-  const Vertex_triples vertex_triples(sites.size(), diagram, options.cancellation);  // for both steps
+  const Vertex_triples vertex_triples(sites, diagram, options.cancellation);  // for both steps
   topology.edges = edges_through_vertices(sites, diagram, vertex_triples, options.threads, options.cancellation);
   topology.vertices = std::move(diagram);
   Topology_statistics& s = topology.statistics;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
@@ -81,7 +82,7 @@ void pair_departures(const Trisector& trisector, Trisector_kind kind, Curve_shap
 
 std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites, const Diagram& diagram, int threads,
                                                  const Cancellation* cancellation) {
-  const Vertex_triples triples(sites.size(), diagram, cancellation);
+  const Vertex_triples triples(sites, diagram, cancellation);
   return edges_through_vertices(sites, diagram, triples, threads, cancellation);
 }
 
@@ -95,6 +96,21 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
   group_start.push_back(entries.size());
+
+  // The gradients of the large tie sets, for their first-order sides (vertex_fan.h), by vertex.
+  const std::size_t small_up_to = triples.every_triple_up_to();
+  std::vector<std::pair<std::size_t, Tie_gradients>> large;
+  for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
+    if (diagram.vertices[v].tie_set.size() <= small_up_to) continue;
+    Tie_gradients n;
+    if (tie_gradients(sites, diagram.vertices[v], n)) large.emplace_back(v, std::move(n));
+  }
+  const auto gradients_of = [&](std::size_t v) -> const Tie_gradients* {
+    if (diagram.vertices[v].tie_set.size() <= small_up_to) return nullptr;
+    const auto before = [](const auto& x, std::size_t w) { return x.first < w; };
+    const auto at = std::lower_bound(large.begin(), large.end(), v, before);
+    return at != large.end() && at->first == v ? &at->second : nullptr;
+  };
 
   // Groups in chunks of consecutive curves, each chunk's edges in its own list: the output is the same
   // for every thread count, and there is no list (nor scratch vectors) per curve. One thread: one chunk,
@@ -121,7 +137,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
           std::array<std::size_t, 3> positions{};  // of the triple's sites in the vertex's tie set
           for (int m = 0; m < 3; ++m)
             positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
-          departures_along(sites, v, trisector, positions, departures);
+          departures_along(sites, v, trisector, positions, departures, gradients_of(entries[i].vertex));
           vertex_of.resize(departures.size(), entries[i].vertex);
         }
         if (departures.empty()) continue;

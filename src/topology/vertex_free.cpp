@@ -191,7 +191,7 @@ class Located_witness {
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
                                     const std::vector<Diagram_edge>& edges, const Octree_regions& regions, int threads,
                                     const Cancellation* cancellation, std::size_t all_triples_up_to) {
-  return vertex_free_parts(sites, Vertex_triples(sites.size(), diagram, cancellation), edges, regions, threads,
+  return vertex_free_parts(sites, Vertex_triples(sites, diagram, cancellation), edges, regions, threads,
                            cancellation, all_triples_up_to);
 }
 

@@ -1,0 +1,143 @@
+// The triples that a vertex's star offers (topology/departure_star.h) hold every triple along which an edge
+// leaves it: each family's edges through vertices, with every tie set of 4 or more sites listed by its star,
+// equal those from every triple, and every departure of every vertex is among its star's triples. A failure
+// prints the family, size and seed (`apollonius3d generate KIND --n N --seed S` writes that input).
+// APOLLONIUS_DEPARTURE_STAR_SEEDS sets the seeds per family and size, APOLLONIUS_DIFFERENTIAL_TIME_LIMIT the
+// CPU seconds allowed per input.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "octree/octree_diagram.h"
+#include "predicates/trisector.h"
+#include "reference/site_generators.h"
+#include "support/time_limit.h"
+#include "topology/departure_star.h"
+#include "topology/trisector_edges.h"
+#include "topology/vertex_fan.h"
+#include "topology/vertex_triples.h"
+
+using namespace apollonius;
+using apollonius::testing::Input_time_limit;
+using apollonius::testing::seconds_from_environment;
+
+namespace {
+
+constexpr std::size_t kEveryTriple = std::numeric_limits<std::size_t>::max();
+
+bool same(const Diagram_edge& x, const Diagram_edge& y) {
+  return x.tie_set == y.tie_set && x.start == y.start && x.end == y.end && x.closed == y.closed && x.curve == y.curve;
+}
+
+// Every triple of v's tie set along which departures_along finds an edge leaving v.
+std::vector<std::array<Site_index, 3>> departing_triples(const std::vector<Site>& sites, const Diagram_vertex& v) {
+  std::vector<std::array<Site_index, 3>> out;
+  std::vector<Departure> departures;
+  const std::vector<Site_index>& tie = v.tie_set;
+  for (std::size_t i = 0; i < tie.size(); ++i)
+    for (std::size_t j = i + 1; j < tie.size(); ++j)
+      for (std::size_t l = j + 1; l < tie.size(); ++l) {
+        const std::array<Site_index, 3> triple{tie[i], tie[j], tie[l]};
+        const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+        departures.clear();
+        departures_along(sites, v, trisector, {i, j, l}, departures);
+        if (!departures.empty()) out.push_back(triple);
+      }
+  return out;
+}
+
+struct Star_counts {
+  std::size_t vertices = 0, given_up = 0, departures = 0, offered = 0;
+};
+
+// Checks that each vertex's departures are among its star's triples.
+void check_stars(const std::vector<Site>& sites, const Diagram& diagram, Star_counts& counts) {
+  std::vector<std::array<Site_index, 3>> offered;
+  for (const Diagram_vertex& v : diagram.vertices) {
+    ++counts.vertices;
+    if (!candidate_departure_triples(sites, v, offered)) {
+      ++counts.given_up;
+      continue;
+    }
+    CHECK(std::is_sorted(offered.begin(), offered.end()));
+    CHECK(std::adjacent_find(offered.begin(), offered.end()) == offered.end());
+    for (const std::array<Site_index, 3>& t : departing_triples(sites, v)) {
+      ++counts.departures;
+      CHECK_MESSAGE(std::binary_search(offered.begin(), offered.end(), t),
+                    "departure " << t[0] << " " << t[1] << " " << t[2] << " not offered by the star");
+    }
+    counts.offered += offered.size();
+  }
+}
+
+}  // namespace
+
+TEST_CASE("edges from the vertices' stars equal those from every triple, on every family") {
+  const auto seeds = static_cast<std::uint64_t>(seconds_from_environment("APOLLONIUS_DEPARTURE_STAR_SEEDS", 4));
+  const double time_limit = seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60);
+  std::size_t inputs = 0, undecided = 0, edges = 0;
+  Star_counts counts;
+  for (const Site_family_description& f : kSiteFamilies) {
+    const bool slow = f.family == Site_family::wide_range || f.family == Site_family::lattice_noise;
+    for (const std::size_t n : slow ? std::vector<std::size_t>{8, 14} : std::vector<std::size_t>{12, 40}) {
+      for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        const std::string family = f.name;
+        CAPTURE(family);
+        CAPTURE(n);
+        CAPTURE(seed);
+        const std::vector<Site> sites = generate_sites(f.family, n, seed);
+        Input_time_limit limit(time_limit, family + " " + std::to_string(n) + " seed " + std::to_string(seed));
+        const Diagram diagram = octree_diagram(sites, Octree_options{});
+        std::vector<Diagram_edge> every, starred;
+        try {
+          every = edges_through_vertices(sites, diagram, Vertex_triples(sites, diagram, nullptr, kEveryTriple), 1);
+        } catch (const std::logic_error&) {  // a tie this version does not decide (build_topology.h)
+          ++undecided;
+          continue;
+        }
+        starred = edges_through_vertices(sites, diagram, Vertex_triples(sites, diagram, nullptr, 3), 1);
+        check_stars(sites, diagram, counts);
+        ++inputs;
+        edges += every.size();
+        REQUIRE(starred.size() == every.size());
+        for (std::size_t e = 0; e < every.size(); ++e) CHECK(same(starred[e], every[e]));
+      }
+    }
+  }
+  MESSAGE(inputs << " inputs (" << undecided << " undecided), " << edges << " edges, " << counts.vertices
+                 << " stars (" << counts.given_up << " given up), " << counts.departures << " departures, "
+                 << counts.offered << " triples offered");
+  CHECK(inputs > 100);
+  CHECK(counts.departures > 1000);
+  CHECK(counts.given_up * 20 < counts.vertices);
+}
+
+// Balls tangent to one sphere tie at its centre: the star of that vertex offers O(k) triples of the
+// C(k, 3), and they hold every departure.
+TEST_CASE("the star of a vertex of a hundred and twenty tied sites") {
+  const std::vector<Site> sites = generate_sites(Site_family::sphere_tangent, 120, 2);
+  Input_time_limit limit(seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60), "sphere-tangent 120");
+  const Diagram diagram = octree_diagram(sites, Octree_options{});
+  const auto fewer_sites = [](const Diagram_vertex& a, const Diagram_vertex& b) {
+    return a.tie_set.size() < b.tie_set.size();
+  };
+  const auto largest = std::max_element(diagram.vertices.begin(), diagram.vertices.end(), fewer_sites);
+  REQUIRE(largest != diagram.vertices.end());
+  const std::size_t k = largest->tie_set.size();
+  CHECK(k >= 100);
+  std::vector<std::array<Site_index, 3>> offered;
+  REQUIRE(candidate_departure_triples(sites, *largest, offered));
+  CHECK(offered.size() <= 64 * k);
+  const std::vector<std::array<Site_index, 3>> departures = departing_triples(sites, *largest);
+  CHECK(departures.size() >= k);
+  for (const std::array<Site_index, 3>& t : departures) CHECK(std::binary_search(offered.begin(), offered.end(), t));
+  const std::vector<Diagram_edge> every =
+      edges_through_vertices(sites, diagram, Vertex_triples(sites, diagram, nullptr, kEveryTriple), 1);
+  const std::vector<Diagram_edge> starred = edges_through_vertices(sites, diagram, Vertex_triples(sites, diagram), 1);
+  REQUIRE(starred.size() == every.size());
+  for (std::size_t e = 0; e < every.size(); ++e) CHECK(same(starred[e], every[e]));
+  MESSAGE(k << " tied sites, " << offered.size() << " triples offered, " << departures.size() << " departures");
+}
