@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <optional>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "predicates/rounding_guard.h"
 #include "predicates/trisector_predicates.h"
 
 namespace apollonius {
-
 namespace {
 
 const std::optional<Sign> kUncertain;

@@ -1,10 +1,13 @@
 // libFuzzer target: the whole diagram of a small site set decoded from the bytes (fuzz_sites.h), built
 // from the brute-force vertices with every site a candidate, and from the octree's vertices and regions.
 // Both must equal: the same edges as the brute-force edge reference, the same faces and cells, and the
-// Euler relation must hold. A disagreement prints the sites and traps; any exception is a finding (the
+// Euler relation must hold; and the edges through vertices with every tie set of 4 or more sites listed by
+// its star of directions (departure_star.h) equal those from every triple. A disagreement prints the sites
+// and traps; any exception is a finding (the
 // octree's documented overflow near the double range aside), including build_topology's "not decided".
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -16,6 +19,8 @@
 #include "reference/brute_force_edges.h"
 #include "topology/build_topology.h"
 #include "topology/euler_characteristic.h"
+#include "topology/trisector_edges.h"
+#include "topology/vertex_triples.h"
 
 namespace {
 
@@ -62,6 +67,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Diagram_topology brute = build_topology(sites, reference, regions_for_every_site(reference));
   if (!same_edges(brute.edges, brute_force_edges(sites, reference))) report("edges differ from the brute-force edges", sites);
   if (euler_defect(brute) != 0) report("the Euler relation fails", sites);
+  const std::vector<Diagram_edge> from_stars =
+      edges_through_vertices(sites, reference, Vertex_triples(sites, reference, nullptr, 3), 1);
+  const std::vector<Diagram_edge> from_every_triple = edges_through_vertices(
+      sites, reference, Vertex_triples(sites, reference, nullptr, std::numeric_limits<std::size_t>::max()), 1);
+  if (!same_edges(from_stars, from_every_triple)) report("the edges from the vertices' stars differ", sites);
 
   Octree_regions regions;
   Diagram vertices;
