@@ -6,16 +6,18 @@
 
 #include "predicates/number_types.h"
 #include "predicates/rounding_guard.h"
+#include "predicates/trisector.h"
+#include "predicates/trisector_predicates.h"
 
 namespace apollonius {
 namespace {
 
 // Patches are refined at most this deep (squares of side 2^-15 of a face).
 constexpr int kMaxDepth = 16;
-// Levels without a removal before every triple of the survivors is recorded.
+// Levels without a removal before the survivors are settled (settle_first_order_tie, settle_second_order_tie).
 constexpr int kStagnation = 3;
 // Past these, per site of the tie set, the star gives up.
-constexpr std::size_t kPatchesPerSite = 256;
+constexpr std::size_t kPatchesPerSite = 4096;
 constexpr std::size_t kTriplesPerSite = 64;
 // Survivors least in y.n at a patch's middle, each tried as the site that beats the others.
 constexpr std::size_t kWitnesses = 3;
@@ -32,14 +34,28 @@ struct Patch {
   int stagnant;  // levels since a site was last removed
 };
 
+// The star of one vertex: refines patches of directions y for points P_k (the gradients n_k, then, within
+// a cocircular set, the second-order lifts), keeping the sites that minimise y.P_k somewhere in the patch.
 class Departure_star {
  public:
-  Departure_star(const std::vector<Site_index>& tie_set, Tie_gradients gradients,
-                 std::vector<std::array<Site_index, 3>>& triples)
-      : tie_set_(tie_set), gradients_(std::move(gradients)), triples_(triples) {}
+  Departure_star(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients gradients,
+                 std::vector<Interval> distances, std::vector<std::array<Site_index, 3>>& triples)
+      : sites_(sites), v_(v), gradients_(std::move(gradients)), distances_(std::move(distances)), triples_(triples) {}
 
-  bool refine(const Patch& p, const std::vector<std::size_t>& survivors) {
-    if (++patches_ > kPatchesPerSite * tie_set_.size()) return false;
+  bool run() {
+    std::vector<std::size_t> all(v_.tie_set.size());
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    for (int face = 0; face < 6; ++face)
+      if (!refine(gradients_, Order::first, {face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, all))
+        return false;
+    return true;
+  }
+
+ private:
+  enum class Order { first, second };
+
+  bool refine(const Tie_gradients& points, Order order, const Patch& p, const std::vector<std::size_t>& survivors) {
+    if (++patches_ > kPatchesPerSite * v_.tie_set.size()) return false;
     std::vector<std::size_t> kept = survivors;
     {
       Rounding_guard guard;
@@ -47,25 +63,28 @@ class Departure_star {
       y[p.axis] = Interval(p.side);
       y[(p.axis + 1) % 3] = Interval(p.s0, p.s1);
       y[(p.axis + 2) % 3] = Interval(p.t0, p.t1);
+      // A lower facet of the lifts has a supporting plane from below: y's last coordinate is positive.
+      if (order == Order::second && y[2].sup() <= 0) return true;
       std::array<double, 3> middle;
       middle[p.axis] = p.side;
       middle[(p.axis + 1) % 3] = p.s0 + (p.s1 - p.s0) / 2;
       middle[(p.axis + 2) % 3] = p.t0 + (p.t1 - p.t0) / 2;
-      std::vector<std::pair<double, std::size_t>> order;  // doubles: only a choice of witnesses
+      std::vector<std::pair<double, std::size_t>> order_at_middle;  // doubles: only a choice of witnesses
       for (std::size_t c : kept) {
         double value = 0;
-        for (int a = 0; a < 3; ++a) value += middle[a] * (gradients_[c][a].inf() + gradients_[c][a].sup()) / 2;
-        order.push_back({value, c});
+        for (int a = 0; a < 3; ++a) value += middle[a] * (points[c][a].inf() + points[c][a].sup()) / 2;
+        order_at_middle.push_back({value, c});
       }
-      const std::size_t witnesses = std::min(order.size(), kWitnesses);
-      std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(witnesses), order.end());
+      const std::size_t witnesses = std::min(order_at_middle.size(), kWitnesses);
+      std::partial_sort(order_at_middle.begin(), order_at_middle.begin() + static_cast<std::ptrdiff_t>(witnesses),
+                        order_at_middle.end());
       for (std::size_t w = 0; w < witnesses && kept.size() > 3; ++w) {
-        const std::size_t j = order[w].second;
+        const std::size_t j = order_at_middle[w].second;
         if (std::find(kept.begin(), kept.end(), j) == kept.end()) continue;
         std::size_t end = 0;
         for (std::size_t c : kept) {
-          const Direction difference = {gradients_[c][0] - gradients_[j][0], gradients_[c][1] - gradients_[j][1],
-                                        gradients_[c][2] - gradients_[j][2]};
+          const Direction difference = {points[c][0] - points[j][0], points[c][1] - points[j][1],
+                                        points[c][2] - points[j][2]};
           const bool beaten = c != j && dot(y, difference).inf() > 0;
           if (!beaten) kept[end++] = c;
         }
@@ -73,23 +92,106 @@ class Departure_star {
       }
     }
     if (kept.size() < 3) return true;  // no direction of the patch has three sites nearest
+    if (kept.size() == 3) return record(kept);
     const int stagnant = kept.size() == survivors.size() ? p.stagnant + 1 : 0;
-    if (kept.size() == 3 || stagnant >= kStagnation || p.depth >= kMaxDepth) return record(kept);
+    if (stagnant >= kStagnation || p.depth >= kMaxDepth)
+      return order == Order::first ? settle_first_order_tie(kept) : settle_second_order_tie(kept);
     const double sm = p.s0 + (p.s1 - p.s0) / 2, tm = p.t0 + (p.t1 - p.t0) / 2;
     for (int q = 0; q < 4; ++q) {
       const Patch child{p.axis, p.side, q & 1 ? sm : p.s0, q & 1 ? p.s1 : sm, q & 2 ? tm : p.t0,
                         q & 2 ? p.t1 : tm, p.depth + 1, stagnant};
-      if (!refine(child, kept)) return false;
+      if (!refine(points, order, child, kept)) return false;
     }
     return true;
   }
 
- private:
+  // Survivors that first order does not separate. If they are exactly cocircular (each ties to first order
+  // along the curve of three of them, sides_near_vertex), an edge of them leaves along the circle's axis nu
+  // and, with x(s) = v + s nu + s^2 kappa / 2 on it, d_k(x(s)) = d(v) + s c + s^2 (kappa.n_k + (1 - c^2) / D_k) / 2
+  // (c = nu.n_k, D_k = |v - p_k|); writing n_j as an affine combination of T's n_a, n_b, n_c, kappa cancels:
+  // j is farther than T to second order where 1 / D_j lies above the plane through T's lifts
+  // (n_k, 1 / D_k). So T is a lower facet of the lifts, which a second star over them finds, the lifts
+  // projected to the plane along an axis where nu is certainly not 0 (an affine bijection of the circle's
+  // plane keeps the lower facets). Otherwise every triple of the survivors.
+  bool settle_first_order_tie(const std::vector<std::size_t>& survivors) {
+    const std::array<Site_index, 3> smallest = smallest_triple(survivors);
+    const Trisector trisector(smallest, {sites_[smallest[0]], sites_[smallest[1]], sites_[smallest[2]]});
+    if (!is_curve(classify_trisector(trisector).first)) return record(survivors);
+    for (std::size_t c : survivors) {
+      const Site_index site = v_.tie_set[c];
+      if (site == smallest[0] || site == smallest[1] || site == smallest[2]) continue;
+      const auto [after, before] = sides_near_vertex(trisector, v_.vertex, sites_[site]);
+      if (after != Sign::ZERO && before == -after) return record(survivors);  // apart to first order
+    }
+    Tie_gradients lifts(gradients_.size());
+    {
+      Rounding_guard guard;
+      const auto position = [&](Site_index site) {
+        const auto found = std::lower_bound(v_.tie_set.begin(), v_.tie_set.end(), site);
+        return static_cast<std::size_t>(found - v_.tie_set.begin());
+      };
+      const Direction& a = gradients_[position(smallest[0])];
+      const Direction& b = gradients_[position(smallest[1])];
+      const Direction& c = gradients_[position(smallest[2])];
+      const Direction u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const Direction axis_normal = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+      int axis = -1;
+      double clearance = 0;
+      for (int i = 0; i < 3; ++i) {
+        const Interval x = axis_normal[i];
+        const double apart = x.inf() > 0 ? x.inf() : x.sup() < 0 ? -x.sup() : 0;
+        if (apart > clearance) axis = i, clearance = apart;
+      }
+      if (axis < 0) return record(survivors);
+      for (std::size_t k : survivors)
+        lifts[k] = {gradients_[k][(axis + 1) % 3], gradients_[k][(axis + 2) % 3], Interval(1) / distances_[k]};
+    }
+    for (int face = 0; face < 6; ++face)
+      if (!refine(lifts, Order::second, {face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, survivors))
+        return false;
+    return true;
+  }
+
+  // Survivors that second order does not separate either. If all tie along the whole curve of their
+  // smallest triple, that curve is every one of their triples' trisector and its edge (tie set: these
+  // survivors, as a site tied along it ties to first and second order) is counted from that triple alone.
+  // Otherwise every triple of them.
+  bool settle_second_order_tie(const std::vector<std::size_t>& survivors) {
+    const std::array<Site_index, 3> smallest = smallest_triple(survivors);
+    const Trisector trisector(smallest, {sites_[smallest[0]], sites_[smallest[1]], sites_[smallest[2]]});
+    if (!is_curve(classify_trisector(trisector).first)) return record(survivors);
+    for (std::size_t c : survivors) {
+      const Site_index site = v_.tie_set[c];
+      if (site == smallest[0] || site == smallest[1] || site == smallest[2]) continue;
+      const auto [after, before] = sides_near_vertex(trisector, v_.vertex, sites_[site]);
+      if (after != Sign::ZERO || before != Sign::ZERO) return record(survivors);
+    }
+    triples_.push_back(smallest);
+    return true;
+  }
+
+  static bool is_curve(Trisector_kind kind) {
+    return kind == Trisector_kind::ellipse || kind == Trisector_kind::hyperbola || kind == Trisector_kind::parabola;
+  }
+
+  std::array<Site_index, 3> smallest_triple(const std::vector<std::size_t>& survivors) const {
+    std::vector<Site_index> s;
+    for (std::size_t c : survivors) s.push_back(v_.tie_set[c]);
+    std::partial_sort(s.begin(), s.begin() + 3, s.end());
+    return {s[0], s[1], s[2]};
+  }
+
   bool record(const std::vector<std::size_t>& survivors) {
     const std::size_t k = survivors.size();
-    if (triples_.size() + k * (k - 1) / 2 * (k - 2) / 3 > kTriplesPerSite * tie_set_.size()) return false;
+    const std::size_t count = k * (k - 1) / 2 * (k - 2) / 3;  // C(k, 3), exact at each step
+    const std::size_t cap = kTriplesPerSite * v_.tie_set.size();
+    if (triples_.size() + count > cap) {  // neighbouring patches record the same triples: count each once
+      std::sort(triples_.begin(), triples_.end());
+      triples_.erase(std::unique(triples_.begin(), triples_.end()), triples_.end());
+      if (triples_.size() + count > cap) return false;
+    }
     std::vector<Site_index> s;
-    for (std::size_t c : survivors) s.push_back(tie_set_[c]);
+    for (std::size_t c : survivors) s.push_back(v_.tie_set[c]);
     std::sort(s.begin(), s.end());
     for (std::size_t a = 0; a < k; ++a)
       for (std::size_t b = a + 1; b < k; ++b)
@@ -97,17 +199,21 @@ class Departure_star {
     return true;
   }
 
-  const std::vector<Site_index>& tie_set_;
+  const std::vector<Site>& sites_;
+  const Diagram_vertex& v_;
   Tie_gradients gradients_;
+  std::vector<Interval> distances_;  // per site of the tie set: encloses D_k = |v - p_k|
   std::vector<std::array<Site_index, 3>>& triples_;
   std::size_t patches_ = 0;
 };
 
 }  // namespace
 
-bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients& gradients) {
+bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients& gradients,
+                   std::vector<Interval>* distances) {
   const std::size_t k = v.tie_set.size();
   gradients.resize(k);
+  if (distances != nullptr) distances->resize(k);
   Rounding_guard guard;
   const std::array<Interval, 4> p = v.vertex.point_interval();
   for (std::size_t c = 0; c < k; ++c) {
@@ -116,6 +222,7 @@ bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_
     const Interval distance = CGAL::sqrt(dot(offset, offset));
     if (!(distance.inf() > 0) || !std::isfinite(distance.sup())) return false;  // v may be a centre
     for (int a = 0; a < 3; ++a) gradients[c][a] = offset[a] / distance;
+    if (distances != nullptr) (*distances)[c] = distance;
   }
   return true;
 }
@@ -124,12 +231,10 @@ bool candidate_departure_triples(const std::vector<Site>& sites, const Diagram_v
                                  std::vector<std::array<Site_index, 3>>& triples) {
   triples.clear();
   Tie_gradients gradients;
-  if (!tie_gradients(sites, v, gradients)) return false;
-  Departure_star star(v.tie_set, std::move(gradients), triples);
-  std::vector<std::size_t> all(v.tie_set.size());
-  std::iota(all.begin(), all.end(), std::size_t{0});
-  for (int face = 0; face < 6; ++face)
-    if (!star.refine({face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, all)) return false;
+  std::vector<Interval> distances;
+  if (!tie_gradients(sites, v, gradients, &distances)) return false;
+  Departure_star star(sites, v, std::move(gradients), std::move(distances), triples);
+  if (!star.run()) return false;
   std::sort(triples.begin(), triples.end());
   triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
   return true;

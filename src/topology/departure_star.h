@@ -7,11 +7,15 @@
 // t.n_a = t.n_b <= t.n_j for a, b in E and j in the tie set: E's sites minimise y.n at y = t / |t|_inf, a
 // point of the surface of [-1, 1]^3. A patch of directions (a square on a face of the cube) keeps every
 // site that no other beats at each y of it (y.(n_c - n_j) > 0, certain in intervals), so E survives in
-// every patch that contains y. Patches are refined until at most three sites survive; where they stop
-// dropping (sites whose n_k are cocircular tie to first order along one direction) or at kMaxDepth, every
-// triple of the survivors is recorded. So each triple of E, its smallest one included (from which
-// departures_along counts the edge), is recorded: a superset of the departures, which departures_along
-// then decides exactly. In general position the n_k's convex hull has about 2k facets, one per edge.
+// every patch that contains y. Patches are refined until at most three sites survive. Where they stop
+// dropping (sites whose n_k are cocircular tie to first order along the circle's axis) or at kMaxDepth,
+// survivors that are exactly cocircular (sides_near_vertex) are separated by second order, in a star over
+// their lifts (n_k, 1 / |v - p_k|), and those that tie to second order too and along a whole curve give that
+// curve's smallest triple; any other survivors give every triple of theirs (the derivations are at
+// settle_first_order_tie and settle_second_order_tie). So each edge's smallest triple (from which
+// departures_along counts it) is recorded: a superset of the departures, which departures_along then
+// decides exactly. In general position the n_k's convex hull has about 2k facets, one per edge; on k balls
+// tangent to one circle, all tied at its centre, the lifts' lower facets number about k.
 //
 // Termination: depth at most kMaxDepth, at most kPatchesPerSite patches and kTriplesPerSite recorded
 // triples per site, past which it gives up and the caller lists every triple (exact, as for small sets).
@@ -29,8 +33,10 @@ namespace apollonius {
 // (and intervals used) only inside a Rounding_guard.
 using Tie_gradients = std::vector<std::array<Interval, 3>>;
 
-// Fills `gradients` for v and returns true; false when some enclosure is not finite or v may be a centre.
-bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients& gradients);
+// Fills `gradients` (and, if given, `distances`, enclosures of |v - p_k|) for v and returns true; false
+// when some enclosure is not finite or v may be a centre.
+bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients& gradients,
+                   std::vector<Interval>* distances = nullptr);
 
 // Replaces `triples` with triples of v.tie_set (ascending, sorted, each once) that include every triple
 // along which an edge leaves v, and returns true; or returns false when it gives up.
