@@ -43,7 +43,7 @@ void print_octree_statistics(std::ostream& err, const Octree_statistics& s) {
       << "seed_boxes " << s.seed_boxes << "\nseed_candidates " << s.seed_candidates << "\nescaping_sites "
       << s.escaping_sites << "\nboxes " << s.boxes << "\nbox_candidates " << s.box_candidates << "\nleaves "
       << s.leaves << "\nleaf_candidates "
-      << s.leaf_candidates << "\nquadruples " << s.quadruples << "\ndistinct_quadruples " << s.distinct_quadruples
+      << s.leaf_candidates << "\nlifted_leaves " << s.lifted_leaves << "\nquadruples " << s.quadruples << "\ndistinct_quadruples " << s.distinct_quadruples
       << "\nfar_field_quadruples " << s.far_field_quadruples << '\n';
   // The lifted fallback (octree_diagram.h, step 5), only when it ran.
   if (s.lifted_fallback)

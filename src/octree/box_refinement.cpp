@@ -340,15 +340,22 @@ void Box_refinement<Kernel>::decide_lifted_leaf(const Axis_box& box, std::size_t
   ++counts_.leaves;
   counts_.leaf_candidates += k;
   std::sort(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
+  ++counts_.lifted_leaves;
   const std::vector<Site_index> leaf(stack_.begin() + static_cast<std::ptrdiff_t>(first), stack_.end());
+  for (const std::array<Site_index, 4>& quadruple : lifted_faces_of(leaf))
+    keep_roots_in_box(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)), 0, box, leaf.data(),
+                      k, leaf_start, out, false);
+}
+
+template <class Kernel>
+const std::vector<std::array<Site_index, 4>>& Box_refinement<Kernel>::lifted_faces_of(
+    const std::vector<Site_index>& leaf) {
   auto faces = lifted_faces_.find(leaf);
   if (faces == lifted_faces_.end()) {
     if (lifted_faces_.size() >= kRememberedLiftedLeaves) lifted_faces_.clear();
     faces = lifted_faces_.emplace(leaf, lifted_triangulation(sites_, leaf, cancellation_).quadruples).first;
   }
-  for (const std::array<Site_index, 4>& quadruple : faces->second)
-    keep_roots_in_box(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)), 0, box, leaf.data(), k,
-                      leaf_start, out, false);
+  return faces->second;
 }
 
 // Tried on a tiny box of more than kLeafCandidates candidates K that did not drop. The lifts' span is
@@ -438,8 +445,10 @@ void Box_refinement<Kernel>::decide_line_leaf(const Axis_box& box, std::size_t f
 // each quadruple only the other root is located. Which quadruples: if the lifts of K span a 3-space, every
 // such quadruple has the same line through (v, r) and the same polynomial on it (tie_point_star.h), so the
 // heaviest basis gives the only other point that is a valid root of any of them (lift_span.h); otherwise
-// the star about v picks the quadruples near the box, O(k) in general position. Only if the star gives up
-// are all C(k, 4) quadruples enumerated, streamed.
+// the star about v picks the quadruples near the box, O(k) in general position. If the star gives up,
+// the 3-faces of the candidates' lifted triangulation hold every vertex in the box (decide_lifted_leaf),
+// O(k log k) expected for the triangulation and its size in quadruples, where all C(k, 4) quadruples
+// (concentric shells of 1,000 balls: hundreds tied at the centre) would not end.
 template <class Kernel>
 void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out) {
   const std::size_t k = stack_.size() - first, leaf_start = out.size();
@@ -455,9 +464,8 @@ void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::siz
   if (dimension <= 2) return;  // no quadruple of K has a discrete set of roots
   if (Kernel::in_box(tie_point, box, closed_above)) append_unique<Kernel>(out, leaf_start, {std::vector<Site_index>(leaf, leaf + k), tie_point});
 
-  // Each quadruple costs about what a box does, and C(k, 4) of them have no other bound: they are counted
-  // like boxes, for the cancellation and the budget (concentric shells of 2,000 balls: hundreds of tied
-  // sites, minutes in one leaf before the budget saw them).
+  // Each quadruple costs about what a box does: they are counted like boxes, for the cancellation and the
+  // budget (a leaf can hold O(k^2) of them).
   std::size_t decided = 0;
   const auto decide = [&](const std::array<Site_index, 4>& quadruple, const Quadruple_vertices& roots) {
     if (++decided % kBoxesPerCancellationCheck == 0) {
@@ -470,18 +478,15 @@ void Box_refinement<Kernel>::decide_tie_point_leaf(const Axis_box& box, std::siz
     decide(basis, Kernel::vertices_of_quadruple(make_quadruple(basis, sites_)));
     return;
   }
-  if (star_.quadruples_near(tie_point, box, leaf, k, near_quadruples_)) {
+  if (tie_point_stars_ && star_.quadruples_near(tie_point, box, leaf, k, near_quadruples_)) {
     for (const std::array<Site_index, 4>& quadruple : near_quadruples_)
       decide(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
     return;
   }
-  for (std::size_t a = 0; a < k; ++a)
-    for (std::size_t b = a + 1; b < k; ++b)
-      for (std::size_t c = b + 1; c < k; ++c)
-        for (std::size_t d = c + 1; d < k; ++d) {
-          const std::array<Site_index, 4> quadruple = {leaf[a], leaf[b], leaf[c], leaf[d]};
-          decide(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
-        }
+  ++counts_.lifted_leaves;
+  const std::vector<Site_index> candidates(leaf, leaf + k);
+  for (const std::array<Site_index, 4>& quadruple : lifted_faces_of(candidates))
+    decide(quadruple, Kernel::vertices_of_quadruple(make_quadruple(quadruple, sites_)));
 }
 
 template class Box_refinement<Certified_kernel>;

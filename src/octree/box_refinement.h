@@ -35,6 +35,7 @@ namespace apollonius {
 struct Refinement_counts {
   std::size_t boxes = 0, leaves = 0, leaf_candidates = 0, quadruples = 0, distinct_quadruples = 0;
   std::size_t box_candidates = 0;  // the candidates of every box refined, summed: the refinement's work
+  std::size_t lifted_leaves = 0;   // leaves decided from their candidates' lifted triangulation
 };
 
 // Work space for refining boxes, one per thread. Kernel: kernels.h.
@@ -43,10 +44,11 @@ class Box_refinement {
  public:
   // `root`: the box whose upper faces are closed; every other box is half-open [lo, hi) on each axis.
   // `cancellation` is checked every thousand boxes or so (one seed box can take a second), and as often
-  // the boxes are spent from `budget` when given (work_budget.h).
+  // the boxes are spent from `budget` when given (work_budget.h). `tie_point_stars`: Octree_options's.
   Box_refinement(const std::vector<Site>& sites, const Axis_box& root, const Cancellation* cancellation = nullptr,
-                 Work_budget* budget = nullptr)
-      : sites_(sites), root_(root), cancellation_(cancellation), budget_(budget), star_(sites) {}
+                 Work_budget* budget = nullptr, bool tie_point_stars = true)
+      : sites_(sites), root_(root), cancellation_(cancellation), budget_(budget), tie_point_stars_(tie_point_stars),
+        star_(sites) {}
 
   // Appends every vertex located in the box (half-open, closed on the root's upper faces), with its tie set.
   // Precondition: `candidates` contains every site that owns a point of the closed box.
@@ -71,6 +73,8 @@ class Box_refinement {
   void decide_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
   // The same, for a box of many candidates, from their lifted triangulation's 3-faces.
   void decide_lifted_leaf(const Axis_box& box, std::size_t first, std::vector<Found_vertex>& out);
+  // The 3-faces of the lifted triangulation of `leaf` (ascending), remembered in lifted_faces_.
+  const std::vector<std::array<Site_index, 4>>& lifted_faces_of(const std::vector<Site_index>& leaf);
   // For a tiny box of many candidates: whether their lifts span at most a plane (`vertex_free`), or, if
   // at_point_too, their lifts and power lifts a 3-space (`on_one_line`: every tie among them lies on one
   // line, the heaviest basis's, which line_basis_ then holds), or all of them tie at one point, which
@@ -91,6 +95,7 @@ class Box_refinement {
   Axis_box root_;
   const Cancellation* cancellation_;
   Work_budget* budget_;
+  bool tie_point_stars_;
   std::vector<Site_index> stack_;            // candidate lists of the boxes on the current path
   std::vector<Centre_expansion> expansion_;  // of the candidates of the box being filtered
   std::vector<Site_index> tie_;
@@ -107,7 +112,7 @@ class Box_refinement {
   // The points decide_leaf has decided in its leaf that are equidistant from five or more of its candidates,
   // with those candidates (ascending): each is a root of every quadruple among them.
   std::vector<Found_vertex> decided_here_;
-  // The lifted triangulation's 3-faces of each candidate set decide_lifted_leaf met, a bounded number.
+  // The lifted triangulation's 3-faces of each candidate set lifted_faces_of met, a bounded number.
   std::map<std::vector<Site_index>, std::vector<std::array<Site_index, 4>>> lifted_faces_;
 };
 

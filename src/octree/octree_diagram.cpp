@@ -178,7 +178,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       statistics.escaping_sites = escaping.size();
 
       tbb::enumerable_thread_specific<Box_refinement<Kernel>> refinement(sites, partition.root_box(), options.cancellation,
-                                                                         &box_budget);
+                                                                         &box_budget, options.tie_point_stars);
       std::vector<bool> escapes(options.regions != nullptr ? sites.size() : 0, false);
       if (options.regions != nullptr) {
         for (Site_index s : escaping) escapes[s] = true;
@@ -239,6 +239,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
         statistics.leaves += counts.leaves;
         statistics.leaf_candidates += counts.leaf_candidates;
         statistics.box_candidates += counts.box_candidates;
+        statistics.lifted_leaves += counts.lifted_leaves;
         statistics.quadruples += counts.quadruples;
         statistics.distinct_quadruples += counts.distinct_quadruples;
       }

@@ -58,6 +58,8 @@ struct Octree_statistics {
   std::size_t seed_boxes = 0, seed_candidates = 0, escaping_sites = 0, boxes = 0, leaves = 0, leaf_candidates = 0,
               quadruples = 0, distinct_quadruples = 0, far_field_quadruples = 0;
   std::size_t box_candidates = 0;  // the candidates of every box refined, summed (seed boxes included)
+  // Leaves decided from their candidates' lifted triangulation: huge ones, and tie points whose star gave up.
+  std::size_t lifted_leaves = 0;
   // The lifted fallback (step 5): its time and its 3-faces. The counts above then stay 0, but boxes: those
   // the refinement had reported to the budget when it stopped.
   bool lifted_fallback = false;
@@ -127,6 +129,10 @@ struct Octree_options {
   // cluster beside a ball 2^32 times farther than its spacing, sites from 1e-260 to 1e265) go to step 5 at
   // once too, under the same conditions.
   bool lifted_for_deep_inputs = true;
+  // A leaf where every candidate ties at one point takes the quadruples of that point's star
+  // (tie_point_star.h), and its candidates' lifted triangulation only where the star gives up; false: the
+  // triangulation at once (for the tests that compare the two).
+  bool tie_point_stars = true;
 
   // Never step 5 at once, whatever the input: the octree, and step 5 only past its budget (`--algorithm
   // octree`, and the tests of the octree).

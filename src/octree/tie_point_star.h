@@ -19,7 +19,7 @@
 // Every vertex w != v of the box lies in some patch's cone, and its tie set survives there: w is a root of
 // a recorded quadruple. Termination: depth at most kMaxStarDepth; at most kPatchesPerCandidate patches and
 // kQuadruplesPerCandidate recorded quadruples per candidate, past which the star gives up and the caller
-// enumerates every quadruple (also exact, streamed).
+// takes the 3-faces of the candidates' lifted triangulation (also exact; box_refinement.cpp).
 #pragma once
 
 #include <array>

@@ -161,6 +161,39 @@ TEST_CASE("octree equals brute force on every generator family") {
   CHECK(inputs >= std::min<std::uint64_t>(5000, expected_inputs));
 }
 
+// A tie-point leaf (box_refinement.cpp) whose star gives up is decided from its candidates' lifted
+// triangulation; stars give up only on large inputs (hundreds of balls on concentric shells), so here every
+// tie-point leaf takes the triangulation at once, on the families that tie many sites at one point.
+TEST_CASE("tie-point leaves decided from their lifted triangulation equal the brute force") {
+  const std::uint64_t max_sites = std::max<std::uint64_t>(5, from_environment("APOLLONIUS_DIFFERENTIAL_MAX_SITES", 40));
+  std::size_t inputs = 0, lifted_leaves = 0;
+  for (const Site_family family : {Site_family::cospherical, Site_family::lattice, Site_family::sphere_tangent,
+                                   Site_family::circle_tangent, Site_family::two_spheres, Site_family::shells}) {
+    const std::string name = name_of(family);
+    if (!family_selected(name)) continue;
+    for (std::uint64_t seed = first_seed(); seed < first_seed() + seeds_for(family) / 2; ++seed) {
+      const std::size_t n = 5 + (seed * 7919) % (max_sites - 4);
+      const std::string input = "generate " + name + " --n " + std::to_string(n) + " --seed " + std::to_string(seed);
+      CAPTURE(input);
+      const std::vector<Site> sites = generate_sites(family, n, seed);
+      Input_time_limit reference_limit(reference_time_limit(), input + " (brute force)");
+      const Diagram reference = reference_diagram(family, n, seed);
+      reference_limit.stop();
+      Input_time_limit octree_limit(time_limit(), input + " (octree, no tie-point stars)");
+      Octree_statistics statistics;
+      Octree_options no_stars;
+      no_stars.octree_alone();
+      no_stars.tie_point_stars = false;
+      no_stars.statistics = &statistics;
+      check_same(octree_diagram(sites, no_stars), reference);
+      lifted_leaves += statistics.lifted_leaves;
+      ++inputs;
+    }
+  }
+  MESSAGE(inputs << " inputs, " << lifted_leaves << " leaves decided from their lifted triangulation, all equal");
+  if (inputs > 0) CHECK(lifted_leaves > 0);
+}
+
 TEST_CASE("octree equals brute force on the small vdrc sets") {
   for (const char* name : {"ANO1_0CONNECT", "ANO3_3CONNECT", "Vis_I_10", "Vis_II_5", "Vis_III_5", "Vis_V_20", "Vis_VII_20"}) {
     CAPTURE(name);
