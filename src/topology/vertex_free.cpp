@@ -22,6 +22,7 @@
 #include "predicates/sheet_point.h"
 #include "predicates/trisector_predicates.h"
 #include "predicates/trisector_rows.h"
+#include "topology/region_site_sets.h"
 
 namespace apollonius {
 namespace {
@@ -52,12 +53,20 @@ bool share(Items x, Items y) {
   return false;
 }
 
-// Where the candidates were seen: the boxes (positions in regions.boxes); far: in a far field patch.
-// Inline: most candidates are seen in a few boxes, and there are a million candidates on a large input.
+// Where the candidates were seen: the region boxes' site sets (Region_site_sets); far: in a far field patch.
+// Inline: most candidates are seen in a few sets, and there are a million candidates on a large input.
 struct Occurrences {
-  boost::container::small_vector<std::size_t, 4> boxes;
+  boost::container::small_vector<std::uint32_t, 4> sets;
   bool far = false;
 };
+
+// Calls visit(b) for each region box b of the sets where a candidate was seen, until it returns true.
+template <class Visit>
+void for_boxes(const Region_site_sets& region_sets, const Occurrences& seen, Visit visit) {
+  for (std::uint32_t set : seen.sets)
+    for (std::uint32_t b : region_sets.boxes(set))
+      if (visit(b)) return;
+}
 
 // The sites of a region box or the escaping sites, ascending.
 struct Site_range {
@@ -101,7 +110,7 @@ Interval in_double_range(const NT& x) {  // Wide_interval, Mpfr_interval: infini
 template <class NT>
 Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, const Site& o,
                                      const std::vector<Site>& sites, const Octree_regions& regions,
-                                     const Occurrences& seen) {
+                                     const Region_site_sets& region_sets, const Occurrences& seen) {
   const NT half(0.5);
   const std::array<Interval, 3> v{in_double_range(NT(o.x) + X[0] * half), in_double_range(NT(o.y) + X[1] * half),
                                   in_double_range(NT(o.z) + X[2] * half)};
@@ -117,14 +126,14 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, c
   const int in_root = regions.has_octree ? inside(regions.root) : 0;
   if (in_root < 0) return Filtered_outcome::undecided;
   if (in_root == 1) {
-    for (std::size_t b : seen.boxes) {
+    bool unsure = false;
+    for_boxes(region_sets, seen, [&](std::uint32_t b) {
       const int in = inside(regions.boxes[b].box);
-      if (in < 0) return Filtered_outcome::undecided;
-      if (in == 1) {
-        test = range_of(regions.boxes[b].sites);
-        break;
-      }
-    }
+      if (in == 1) test = range_of(regions.boxes[b].sites);
+      unsure = in < 0;
+      return in != 0;
+    });
+    if (unsure) return Filtered_outcome::undecided;
     // W in no box that holds the triple: the curve is no edge.
     if (!test) return Filtered_outcome::no_edge;
   } else {
@@ -221,13 +230,15 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     return std::binary_search(others.begin(), others.end(), b);
   };
 
-  // Candidate triples and pairs, where each was seen: (set, box) occurrences, sorted and grouped.
-  // Box positions in 32 bits: the occurrence lists are the largest memory of this phase.
-  using Box_position = std::uint32_t;
-  constexpr Box_position kFar = std::numeric_limits<Box_position>::max();
+  // Candidate triples and pairs, where each was seen: (candidate, site set) occurrences, sorted and grouped.
+  // Set numbers in 32 bits: the occurrence lists are the largest memory of this phase.
+  using Set_number = std::uint32_t;
+  constexpr Set_number kFar = std::numeric_limits<Set_number>::max();
   if (regions.boxes.size() >= kFar) throw std::length_error("vertex_free_parts: 2^32 region boxes or more");
-  std::vector<std::pair<Triple, Box_position>> triple_seen;
-  std::vector<std::pair<Pair, Box_position>> pair_seen;
+  // Boxes with the same sites offer the same candidates: each set is noted once.
+  const Region_site_sets region_sets(regions, cancellation);
+  std::vector<std::pair<Triple, Set_number>> triple_seen;
+  std::vector<std::pair<Pair, Set_number>> pair_seen;
   // A vertex-free part that is unbounded has points of its sites' cells arbitrarily far: its sites all
   // escape (regions.escaping holds every site owning a point outside the root box). A bisector sheet is
   // unbounded, so an edge-free face (the whole sheet) has two escaping sites; so has a vertex-free
@@ -248,7 +259,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
   const auto gather_if_large = [&](const auto& set) {
     if (set.size() > largest_with_all_triples) in_large_sets.insert(in_large_sets.end(), set.begin(), set.end());
   };
-  for (const Octree_regions::Box& box : regions.boxes) gather_if_large(box.sites);
+  for (std::size_t s = 0; s < region_sets.size(); ++s) gather_if_large(region_sets.sites(s));
   for (const std::vector<Site_index>& set : regions.far_sets) gather_if_large(set);
   std::sort(in_large_sets.begin(), in_large_sets.end());
   in_large_sets.erase(std::unique(in_large_sets.begin(), in_large_sets.end()), in_large_sets.end());
@@ -302,7 +313,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     }
     for (const Site_index s : set) in_set[s] = false;
   };
-  const auto note = [&](const auto& set, Box_position box) {
+  const auto note = [&](const auto& set, Set_number seen_in) {
     throw_if_cancelled(cancellation);
     const std::size_t size = set.size();
     bool gaps_known = false;
@@ -311,12 +322,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       return gaps.maybe_closed(i, j, k);
     };
     const auto offer_pair = [&](Site_index a, Site_index b) {  // a < b
-      if (escapes[a] && escapes[b] && !on_an_edge(a, b)) pair_seen.push_back({{a, b}, box});
+      if (escapes[a] && escapes[b] && !on_an_edge(a, b)) pair_seen.push_back({{a, b}, seen_in});
     };
     const auto offer = [&](std::size_t i, std::size_t j, std::size_t k) {
       if (vertex_triples.contains({set[i], set[j], set[k]})) return;
       if ((escapes[set[i]] && escapes[set[j]] && escapes[set[k]]) || maybe_closed(i, j, k))
-        triple_seen.push_back({{set[i], set[j], set[k]}, box});
+        triple_seen.push_back({{set[i], set[j], set[k]}, seen_in});
     };
     if (size <= largest_with_all_triples) {
       for (std::size_t i = 0; i < size; ++i)
@@ -343,13 +354,13 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     pair_count += e * (e - 1) / 2;
     triple_count += k * (k - 1) * (k - 2) / 6;
   };
-  for (const Octree_regions::Box& box : regions.boxes) count(box.sites);
+  for (std::size_t s = 0; s < region_sets.size(); ++s) count(region_sets.sites(s));
   for (const std::vector<Site_index>& set : regions.far_sets) count(set);
   pair_seen.reserve(pair_count);
   triple_seen.reserve(triple_count);  // the pages left out are never touched
   {
     Rounding_guard guard;  // for the intervals of maybe_closed
-    for (std::size_t b = 0; b < regions.boxes.size(); ++b) note(regions.boxes[b].sites, static_cast<Box_position>(b));
+    for (std::size_t s = 0; s < region_sets.size(); ++s) note(region_sets.sites(s), static_cast<Set_number>(s));
     for (const std::vector<Site_index>& set : regions.far_sets) note(set, kFar);
   }
   const auto grouped = [&](auto& seen, auto first_site, auto skip) {
@@ -360,7 +371,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       std::size_t end = i;
       Occurrences o;
       for (; end < seen.size() && seen[end].first == seen[i].first; ++end)
-        seen[end].second == kFar ? void(o.far = true) : o.boxes.push_back(seen[end].second);
+        seen[end].second == kFar ? void(o.far = true) : o.sets.push_back(seen[end].second);
       if (!skip(seen[i].first)) groups.push_back({seen[i].first, std::move(o)});
       i = end;
     }
@@ -392,12 +403,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     {
       Rounding_guard guard;
       const std::optional<Vector4<Interval>> X = enclosed_canonical_point(t);
-      if (X) filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, seen);
+      if (X) filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, region_sets, seen);
       const auto try_framed = [&](auto number) {
         using NT = decltype(number);
         if (filtered == Filtered_outcome::undecided)
           if (const std::optional<Framed_curve_point<NT>> W = framed_enclosed_canonical_point<NT>(t))
-            filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, seen);
+            filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, region_sets, seen);
       };
       if (!X) try_framed(Wide_interval());  // its precision is the intervals': only where they left the range
       try_framed(Mpfr_interval());           // signs a hair from zero (a lattice one ulp off)
@@ -412,11 +423,10 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     std::optional<Site_range> test;
     if (in_root(w)) {
       const Located_witness located(w);
-      for (std::size_t b : seen.boxes)
-        if (located.in(regions.boxes[b].box)) {
-          test = range_of(regions.boxes[b].sites);
-          break;
-        }
+      for_boxes(region_sets, seen, [&](std::uint32_t b) {
+        if (located.in(regions.boxes[b].box)) test = range_of(regions.boxes[b].sites);
+        return test.has_value();
+      });
     } else if (seen.far) {
       test = range_of(regions.escaping);
     }
@@ -456,11 +466,10 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     throw_if_cancelled(cancellation);
     const Site &a = sites[pair.first], &b = sites[pair.second];
     std::optional<Site_range> test;
-    for (std::size_t box : seen.boxes)
-      if (axis_point_in_box(a, b, regions.boxes[box].box)) {
-        test = range_of(regions.boxes[box].sites);
-        break;
-      }
+    for_boxes(region_sets, seen, [&](std::uint32_t box) {
+      if (axis_point_in_box(a, b, regions.boxes[box].box)) test = range_of(regions.boxes[box].sites);
+      return test.has_value();
+    });
     if (!test && !regions.has_octree && seen.far) test = range_of(regions.escaping);  // no octree: all escape
     if (!test) continue;
     const std::optional<std::vector<Site_index>> tie = tie_at({pair.first, pair.second}, *test, [&](Site_index s) {

@@ -31,8 +31,10 @@
 // it is found from any triple offered, and kept once. One triangulation serves every large set: on balls
 // tied along an axis, thousands of boxes of a hundred sites each took one apiece. The reference (no octree)
 // offers every triple and pair, so that it stays the simple computation the tests trust.
-// Cost: O(k^3) triples per box of k <= all_triples_up_to sites, each one interval test unless its sites all
-// escape; O(u log u) expected for the triangulation of U's u sites, plus, per large set, its triangles and
+// Boxes with the same sites offer the same candidates, so each distinct set of the boxes (region_site_sets.h)
+// is listed once, and a candidate's boxes are those of its sets.
+// Cost: O(b k) to group b boxes of at most k sites; O(k^3) triples per distinct set of k <= all_triples_up_to
+// sites, each one interval test unless its sites all escape; O(u log u) expected for the triangulation of U's u sites, plus, per large set, its triangles and
 // edges within the set (O(k) to O(k^2)) and k^2 per site whose lift is no vertex; those kept are sorted and
 // grouped; each candidate with no vertex costs one classification, and those that pass the escaping test
 // one witness, filtered (in intervals, then in wide intervals where those leave the double range), tested
@@ -57,7 +59,8 @@ struct Vertex_free_parts {
 
 // `edges` are the edges with a vertex. `regions` from the same octree run as `diagram` (or, for a
 // reference, no box and every active site in one far set). Checks cancellation (cancellation.h) once per
-// box or far set whose candidates it lists, per 4096 candidates grouped, and per candidate tested.
+// site set or far set whose candidates it lists, per 4096 boxes grouped and candidates grouped, and per
+// candidate tested.
 // `all_triples_up_to`: the largest set of an octree whose triples are all offered (tests lower it to compare).
 // Eight: C(8, 3) = 56 triples, about as many as a triangulation's triangles there. Proteins and random balls
 // have no larger set, or a few; boxes of 13 to 64 tied sites (lattices, balls on one circle) gave tens of
