@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "predicates/number_types.h"
 #include "predicates/rounding_guard.h"
@@ -114,25 +115,15 @@ class Departure_star {
   // projected to the plane along an axis where nu is certainly not 0 (an affine bijection of the circle's
   // plane keeps the lower facets). Otherwise every triple of the survivors.
   bool settle_first_order_tie(const std::vector<std::size_t>& survivors) {
-    const std::array<Site_index, 3> smallest = smallest_triple(survivors);
-    const Trisector trisector(smallest, {sites_[smallest[0]], sites_[smallest[1]], sites_[smallest[2]]});
-    if (!is_curve(classify_trisector(trisector).first)) return record(survivors);
-    for (std::size_t c : survivors) {
-      const Site_index site = v_.tie_set[c];
-      if (site == smallest[0] || site == smallest[1] || site == smallest[2]) continue;
-      const auto [after, before] = sides_near_vertex(trisector, v_.vertex, sites_[site]);
-      if (after != Sign::ZERO && before == -after) return record(survivors);  // apart to first order
-    }
+    const auto apart_to_first_order = [](Sign after, Sign before) { return after != Sign::ZERO && before == -after; };
+    const std::optional<std::array<std::size_t, 3>> smallest = smallest_curve_unless(survivors, apart_to_first_order);
+    if (!smallest) return record(survivors);
     Tie_gradients lifts(gradients_.size());
     {
       Rounding_guard guard;
-      const auto position = [&](Site_index site) {
-        const auto found = std::lower_bound(v_.tie_set.begin(), v_.tie_set.end(), site);
-        return static_cast<std::size_t>(found - v_.tie_set.begin());
-      };
-      const Direction& a = gradients_[position(smallest[0])];
-      const Direction& b = gradients_[position(smallest[1])];
-      const Direction& c = gradients_[position(smallest[2])];
+      const Direction& a = gradients_[(*smallest)[0]];
+      const Direction& b = gradients_[(*smallest)[1]];
+      const Direction& c = gradients_[(*smallest)[2]];
       const Direction u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
       const Direction axis_normal = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
       int axis = -1;
@@ -157,28 +148,32 @@ class Departure_star {
   // survivors, as a site tied along it ties to first and second order) is counted from that triple alone.
   // Otherwise every triple of them.
   bool settle_second_order_tie(const std::vector<std::size_t>& survivors) {
-    const std::array<Site_index, 3> smallest = smallest_triple(survivors);
-    const Trisector trisector(smallest, {sites_[smallest[0]], sites_[smallest[1]], sites_[smallest[2]]});
-    if (!is_curve(classify_trisector(trisector).first)) return record(survivors);
-    for (std::size_t c : survivors) {
-      const Site_index site = v_.tie_set[c];
-      if (site == smallest[0] || site == smallest[1] || site == smallest[2]) continue;
-      const auto [after, before] = sides_near_vertex(trisector, v_.vertex, sites_[site]);
-      if (after != Sign::ZERO || before != Sign::ZERO) return record(survivors);
-    }
-    triples_.push_back(smallest);
+    const auto not_tied = [](Sign after, Sign before) { return after != Sign::ZERO || before != Sign::ZERO; };
+    const std::optional<std::array<std::size_t, 3>> smallest = smallest_curve_unless(survivors, not_tied);
+    if (!smallest) return record(survivors);
+    triples_.push_back({v_.tie_set[(*smallest)[0]], v_.tie_set[(*smallest)[1]], v_.tie_set[(*smallest)[2]]});
     return true;
   }
 
-  static bool is_curve(Trisector_kind kind) {
-    return kind == Trisector_kind::ellipse || kind == Trisector_kind::hyperbola || kind == Trisector_kind::parabola;
-  }
-
-  std::array<Site_index, 3> smallest_triple(const std::vector<std::size_t>& survivors) const {
-    std::vector<Site_index> s;
-    for (std::size_t c : survivors) s.push_back(v_.tie_set[c]);
+  // The positions in the tie set (ascending, so its sites are ascending too) of the survivors' smallest
+  // triple, if its trisector is a curve and no other survivor's sides along it near v (sides_near_vertex)
+  // make `rejects` true; else nothing.
+  template <class Rejects>
+  std::optional<std::array<std::size_t, 3>> smallest_curve_unless(const std::vector<std::size_t>& survivors,
+                                                                  Rejects rejects) const {
+    std::vector<std::size_t> s(survivors);
     std::partial_sort(s.begin(), s.begin() + 3, s.end());
-    return {s[0], s[1], s[2]};
+    const std::array<std::size_t, 3> smallest = {s[0], s[1], s[2]};
+    const std::array<Site_index, 3> triple = {v_.tie_set[s[0]], v_.tie_set[s[1]], v_.tie_set[s[2]]};
+    const Trisector trisector(triple, {sites_[triple[0]], sites_[triple[1]], sites_[triple[2]]});
+    const Trisector_kind kind = classify_trisector(trisector).first;
+    if (kind != Trisector_kind::ellipse && kind != Trisector_kind::hyperbola && kind != Trisector_kind::parabola)
+      return std::nullopt;
+    for (auto c = s.begin() + 3; c != s.end(); ++c) {
+      const auto [after, before] = sides_near_vertex(trisector, v_.vertex, sites_[v_.tie_set[*c]]);
+      if (rejects(after, before)) return std::nullopt;
+    }
+    return smallest;
   }
 
   bool record(const std::vector<std::size_t>& survivors) {
