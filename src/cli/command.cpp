@@ -45,6 +45,13 @@ CLI::Validator integer_in_range(std::uint64_t min, std::uint64_t max) {
       "INTEGER");
 }
 
+namespace {
+bool process_ends = false;  // set once by main, before any command runs
+}  // namespace
+
+void set_process_ends_after_command(bool ends) { process_ends = ends; }
+bool process_ends_after_command() { return process_ends; }
+
 void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write) {
   if (path.empty() || path == "-") {
     Chunked_buffer buffer;

@@ -6,9 +6,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "io/read_sites.h"
 
@@ -48,5 +51,20 @@ CLI::Validator integer_in_range(std::uint64_t min, std::uint64_t max);
 // Writes a command's output atomically to path, or to `out` when path is empty or "-", where nothing
 // appears unless all of it is ready. A file that cannot be written is an Output_error (exit 2).
 void write_command_output(const std::string& path, std::ostream& out, const std::function<void(std::ostream&)>& write);
+
+// Whether the process ends when the command returns (set by main; not for a test that runs commands in turn).
+void set_process_ends_after_command(bool ends);
+bool process_ends_after_command();
+
+// Frees `value` now, or, when the process ends after the command, never: a command's large results, once
+// written, took longer to free block by block than the system takes to reclaim their pages (clang's
+// -disable-free does the same). What is kept stays reachable, so no leak checker reports it.
+template <class T>
+void release_or_keep_until_exit(T&& value) {
+  std::decay_t<T> owned(std::forward<T>(value));
+  if (!process_ends_after_command()) return;
+  static auto* kept = new std::vector<std::shared_ptr<void>>();
+  kept->push_back(std::make_shared<std::decay_t<T>>(std::move(owned)));
+}
 
 }  // namespace apollonius

@@ -29,7 +29,7 @@ int run(const Diagram_command& command, std::ostream& out, std::ostream& err) {
   Diagram vertices = octree_diagram(input.sites, Octree_options{command.diagram.threads, &octree_statistics,
                                                                 Arithmetic::certified, &regions});
   const auto after_vertices = std::chrono::steady_clock::now();
-  const Diagram_topology topology = build_topology(input.sites, std::move(vertices), regions, {command.diagram.threads});
+  Diagram_topology topology = build_topology(input.sites, std::move(vertices), regions, {command.diagram.threads});
   validate_topology(input.sites, topology);  // a violation is an internal error: no output
   const auto end = std::chrono::steady_clock::now();
   const std::vector<Predicate_statistics> stats = predicate_statistics();
@@ -52,6 +52,8 @@ int run(const Diagram_command& command, std::ostream& out, std::ostream& err) {
         << "\ntopology count\ncandidate_triples " << topology.statistics.candidate_triples << "\ncandidate_pairs "
         << topology.statistics.candidate_pairs << "\nnested_pairs " << topology.statistics.nested_pairs << '\n';
   }
+  release_or_keep_until_exit(std::move(topology));
+  release_or_keep_until_exit(std::move(regions));
   return EXIT_OK;
 }
 

@@ -90,6 +90,7 @@ int run(const Vertices_command& command, std::ostream& out, std::ostream& err) {
     print_statistics(err, stats);
     if (!brute_force) print_octree_statistics(err, octree_statistics);
   }
+  release_or_keep_until_exit(std::move(diagram));
   return EXIT_OK;
 }
 

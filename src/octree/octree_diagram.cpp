@@ -43,6 +43,10 @@ constexpr double kFarFieldScale = 2;
 // space, not memory: its pages are never touched.
 constexpr std::size_t kReservedVerticesPerSite = 8;
 
+// The same for the region boxes of the whole diagram (octree_diagram.h), with one thread: 9 per site on
+// BALL_SMALL_10000 and 6 on 1j3h; inputs with ties make far more, and their list grows.
+constexpr std::size_t kReservedRegionBoxesPerSite = 16;
+
 // The refinement's budget when only the vertices are asked for (octree_diagram.h, step 5).
 constexpr std::size_t kBoxesPerSiteBeforeLifted = 512;
 constexpr std::size_t kBoxesBeforeLifted = 16384;
@@ -186,6 +190,14 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
         r = {};
         r.has_octree = true;
         r.root = partition.root_box();
+        // One thread refines straight into the list: room for the usual count, so that it rarely moves.
+        if (threads <= 1) {
+          try {
+            r.boxes.reserve(kReservedRegionBoxesPerSite * active.size());
+          } catch (const std::bad_alloc&) {
+            // Address space refused: the list grows as it goes.
+          }
+        }
         for (std::size_t id = 0; id < partition.id_count(); ++id) {
           if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
           const std::vector<Site_index>& c = candidates[id];

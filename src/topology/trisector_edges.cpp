@@ -114,11 +114,14 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
 
   // Groups in chunks of consecutive curves, each chunk's edges in its own list: the output is the same
   // for every thread count, and there is no list (nor scratch vectors) per curve. One thread: one chunk,
-  // which is the result (no copy; a generic vertex ends four edges, each with two ends).
+  // which is the result, with room for one edge per (triple, vertex) pair, so that it never moves: a
+  // generic vertex has four triples and ends four edges, and an edge has one end or two, so there are 2 to
+  // 4 per vertex (2 plus those to infinity: 2.01 on BALL_SMALL_10000, where room for 2 moved them all once).
+  // Room never filled is address space, not memory.
   const std::size_t curves = group_start.size() - 1;
   const std::size_t curves_per_chunk = threads <= 1 ? std::max<std::size_t>(curves, 1) : 256;
   std::vector<std::vector<Diagram_edge>> by_chunk((curves + curves_per_chunk - 1) / curves_per_chunk);
-  if (by_chunk.size() == 1) by_chunk.front().reserve(2 * diagram.vertices.size() + 16);
+  if (by_chunk.size() == 1) by_chunk.front().reserve(entries.size() + 16);
   tbb::task_arena arena(usable_threads(threads));
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, by_chunk.size(), [&](std::size_t chunk) {

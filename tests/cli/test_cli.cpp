@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "reference/brute_force_diagram.h"
+#include "cli/command.h"
 #include "support/cli_helpers.h"
 #include "io/read_sites.h"
 #include "io/write_sites.h"
@@ -357,4 +359,23 @@ TEST_CASE("diagram: the whole diagram as JSON or topology, the same for every th
   CHECK(failed.err.find("bad.balls:2:") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
   CHECK(run({"diagram", input, "--format", "xml"}).code == EXIT_BAD_INPUT);
+}
+
+TEST_CASE("a command's results are freed when it returns, unless the process ends right after") {
+  struct Counted {
+    int* destroyed;
+    explicit Counted(int* d) : destroyed(d) {}
+    Counted(Counted&& other) noexcept : destroyed(std::exchange(other.destroyed, nullptr)) {}
+    ~Counted() {
+      if (destroyed != nullptr) ++*destroyed;
+    }
+  };
+  int destroyed = 0;
+  REQUIRE_FALSE(process_ends_after_command());  // a test runs commands in turn
+  release_or_keep_until_exit(Counted(&destroyed));
+  CHECK(destroyed == 1);
+  set_process_ends_after_command(true);  // as main sets it
+  release_or_keep_until_exit(Counted(&destroyed));
+  set_process_ends_after_command(false);
+  CHECK(destroyed == 1);  // kept, and still reachable (no leak report under ASan)
 }
