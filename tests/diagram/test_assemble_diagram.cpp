@@ -1,13 +1,17 @@
 // assemble_diagram (diagram.h) sorts the vertices where they lie: against the order written out plainly
 // (std::vector's lexicographic tie sets, then the printed values, then the exact order), on shuffled
 // diagrams of every degenerate family (settled or not) and on tie sets that share their first four sites.
-// settle (diagram.h) keeps the rounding and lets the exact values be computed again, equal.
+// settle (diagram.h) keeps the rounding and lets the exact values be computed again, equal. gathered
+// (cancellable_steps.h) appends to the longest list with room for all.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <random>
 
+#include "diagram/cancellable_steps.h"
 #include "diagram/diagram.h"
+#include "diagram/fresh_memory.h"
 #include "predicates/kernels.h"
 #include "reference/brute_force_diagram.h"
 #include "reference/site_generators.h"
@@ -128,4 +132,30 @@ TEST_CASE("a settled vertex keeps its rounding, and computes its released exact 
       }
     }
   }
+}
+
+TEST_CASE("gathered keeps the longest list with room where it lies, and populate_for_writing keeps what memory holds") {
+  std::vector<int> short_roomy = {1, 2};
+  short_roomy.reserve(100000);
+  std::vector<int> long_roomy(30000, 7);
+  long_roomy.reserve(100000);
+  const int* kept = long_roomy.data();
+  std::vector<std::vector<int>> lists;  // not from an initializer list, which would copy them without their room
+  lists.push_back(std::move(short_roomy));
+  lists.push_back(std::move(long_roomy));
+  lists.push_back({3});
+  lists.push_back({});
+  const std::vector<int> all = gathered(lists, nullptr);
+  CHECK(all.data() == kept);  // not moved: the others were appended to it
+  REQUIRE(all.size() == 30003);
+  CHECK(std::all_of(all.begin(), all.begin() + 30000, [](int x) { return x == 7; }));
+  CHECK(std::vector<int>(all.begin() + 30000, all.end()) == std::vector<int>{1, 2, 3});
+
+  std::vector<std::uint64_t> written(1 << 18);
+  for (std::size_t k = 0; k < written.size(); ++k) written[k] = k * 0x9e3779b97f4a7c15ull;
+  populate_for_writing(written.data() + 3, (written.size() - 5) * sizeof(std::uint64_t));  // pages around data
+  populate_for_writing(written.data(), 0);
+  bool unchanged = true;
+  for (std::size_t k = 0; k < written.size(); ++k) unchanged = unchanged && written[k] == k * 0x9e3779b97f4a7c15ull;
+  CHECK(unchanged);
 }
