@@ -110,8 +110,8 @@ std::vector<T> gathered(std::vector<std::vector<T>>& lists, const Cancellation* 
     if (list->capacity() >= total && (roomy == lists.end() || list->size() > roomy->size())) roomy = list;
   if (roomy != lists.end()) {
     all = std::move(*roomy);  // leaves *roomy empty
-    // The others land on pages never touched: backed in one call, the two-thread assembly of 1j3h took a
-    // third less time (docs/benchmarks.md, "Lists that never move").
+    // The others land on pages never touched: backed in one call, not one fault per page (docs/benchmarks.md,
+    // "Lists that never move").
     populate_for_writing(all.data() + all.size(), (total - all.size()) * sizeof(T));
   }
   move_concatenated(lists, all, cancellation);

@@ -11,6 +11,7 @@
 #include <limits>
 #include <new>
 #include <stdexcept>
+#include <vector>
 
 #include "diagram/threads.h"
 #include "diagram/cancellable_steps.h"
@@ -43,8 +44,8 @@ constexpr double kFarFieldScale = 2;
 // space, not memory: its pages are never touched.
 constexpr std::size_t kReservedVerticesPerSite = 8;
 
-// The same for the region boxes of the whole diagram (octree_diagram.h), with one thread: 9 per site on
-// BALL_SMALL_10000 and 6 on 1j3h; inputs with ties make far more, and their list grows.
+// The same for the region boxes of the whole diagram (octree_diagram.h), with one thread: above what random
+// balls and proteins make (docs/benchmarks.md, "Lists that never move"); ties make far more, and the list grows.
 constexpr std::size_t kReservedRegionBoxesPerSite = 16;
 
 // The refinement's budget when only the vertices are asked for (octree_diagram.h, step 5).
@@ -56,6 +57,16 @@ constexpr std::size_t kBoxesBeforeLifted = 16384;
 // one ball 10^6 away from 10,000 others made 6,000 per site, and their refinement took 35 s.
 constexpr std::size_t kSeedCandidatesPerSiteBeforeLifted = 128;
 constexpr std::size_t kSeedCandidatesBeforeLifted = 16384;
+
+// Room for `count` elements where the system grants the address space (a limit, or strict overcommit, may
+// refuse it: the list then grows as it goes).
+template <class T>
+void reserve_if_granted(std::vector<T>& list, std::size_t count) {
+  try {
+    list.reserve(count);
+  } catch (const std::bad_alloc&) {
+  }
+}
 
 // Seconds since the last call (or construction).
 class Lap_timer {
@@ -128,11 +139,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   const int threads = usable_threads(options.threads);
   tbb::enumerable_thread_specific<std::vector<Found_vertex>> found([&] {
     std::vector<Found_vertex> list;
-    try {
-      list.reserve(kReservedVerticesPerSite * active.size());  // every thread may find nearly all of them
-    } catch (const std::bad_alloc&) {
-      // Address space refused (a limit, or strict overcommit): the list grows as it goes.
-    }
+    reserve_if_granted(list, kReservedVerticesPerSite * active.size());  // every thread may find nearly all of them
     return list;
   });
   std::vector<std::vector<Found_vertex>> lists;
@@ -191,13 +198,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
         r.has_octree = true;
         r.root = partition.root_box();
         // One thread refines straight into the list: room for the usual count, so that it rarely moves.
-        if (threads <= 1) {
-          try {
-            r.boxes.reserve(kReservedRegionBoxesPerSite * active.size());
-          } catch (const std::bad_alloc&) {
-            // Address space refused: the list grows as it goes.
-          }
-        }
+        if (threads <= 1) reserve_if_granted(r.boxes, kReservedRegionBoxesPerSite * active.size());
         for (std::size_t id = 0; id < partition.id_count(); ++id) {
           if (id % 4096 == 0) throw_if_cancelled(options.cancellation);
           const std::vector<Site_index>& c = candidates[id];

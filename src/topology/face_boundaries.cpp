@@ -158,7 +158,8 @@ std::vector<Boundary_component> boundary_components(const std::vector<Site>& sit
   std::vector<bool> visited(halves.size(), false);
   std::vector<Boundary_component> components;
   // About one per face, and F = E - V + C + 1 (Euler, with one cell per site): so that the list rarely moves.
-  if (edges.size() + sites.size() > diagram.vertices.size()) components.reserve(edges.size() + sites.size() - diagram.vertices.size() + 16);
+  if (edges.size() + sites.size() > diagram.vertices.size())
+    components.reserve(edges.size() + sites.size() - diagram.vertices.size() + 16);
   for (std::size_t first = 0; first < halves.size(); ++first) {
     if (first % 4096 == 0) throw_if_cancelled(cancellation);
     if (visited[first]) continue;

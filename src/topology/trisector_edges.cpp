@@ -115,9 +115,9 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
   // Groups in chunks of consecutive curves, each chunk's edges in its own list: the output is the same
   // for every thread count, and there is no list (nor scratch vectors) per curve. One thread: one chunk,
   // which is the result, with room for one edge per (triple, vertex) pair, so that it never moves: a
-  // generic vertex has four triples and ends four edges, and an edge has one end or two, so there are 2 to
-  // 4 per vertex (2 plus those to infinity: 2.01 on BALL_SMALL_10000, where room for 2 moved them all once).
-  // Room never filled is address space, not memory.
+  // generic vertex has four triples and ends four edges, each with one end or two, so 2 to 4 edges per
+  // vertex (room for 2 was too little: docs/benchmarks.md, "Lists that never move"). Room never filled is
+  // address space, not memory.
   const std::size_t curves = group_start.size() - 1;
   const std::size_t curves_per_chunk = threads <= 1 ? std::max<std::size_t>(curves, 1) : 256;
   std::vector<std::vector<Diagram_edge>> by_chunk((curves + curves_per_chunk - 1) / curves_per_chunk);
