@@ -25,11 +25,16 @@ bool is_tight(const Interval& x) {
 // as (a^2 - b^2 d) / (a - b sqrt(d)), whose numerator is exact and whose denominator adds two numbers of one
 // sign, so that it stays a few ulps wide where the terms cancel (the vertex near its quadruple's sites
 // while the other root is far).
+// The direct quotient is tried first: the squares cost three products of the longest numbers, and are
+// needed only where the cancellation left it more than a few ulps (2^-48 of its magnitude) wide.
 Interval enclose_root_number(const Exact& a, const Exact& b, const Exact& d, const Interval& root,
                              const Interval& denominator) {
+  const Interval direct = (enclosing_interval(a) + enclosing_interval(b) * root) / denominator;
   const Sign sa = certain_sign(a), sb = certain_sign(b);
-  if (sa == Sign::ZERO || sb == Sign::ZERO || sa == sb)
-    return (enclosing_interval(a) + enclosing_interval(b) * root) / denominator;
+  const double magnitude = std::max(std::fabs(direct.inf()), std::fabs(direct.sup()));
+  if (sa == Sign::ZERO || sb == Sign::ZERO || sa == sb ||
+      (std::isfinite(magnitude) && direct.sup() - direct.inf() <= magnitude * 0x1p-48))
+    return direct;
   return enclosing_interval(a * a - b * b * d) / ((enclosing_interval(a) - enclosing_interval(b) * root) * denominator);
 }
 
@@ -39,17 +44,17 @@ Interval enclose_root_number(const Exact& a, const Exact& b, const Exact& d, con
 // with exact powers of two that bring D, d, and then a_j and b_j 2^t near 1.
 std::array<Interval, 4> enclose(const Vertex_coordinates<Exact>& X, long k = 0) {
   Rounding_guard guard;
+  std::array<Interval, 4> box;
+  std::array<bool, 4> tight{};  // box[j] is final
   if (k == 0) {  // first as they are: D and d are mostly well within the range
     const Interval root = CGAL::sqrt(enclosing_interval(X.discriminant));
     const Interval denominator = enclosing_interval(X.denominator);
     if (denominator.inf() >= 0x1p-900 && denominator.sup() <= 0x1p900 && root.sup() <= 0x1p900) {
-      std::array<Interval, 4> box;
-      bool tight = true;  // else some part underflowed or overflowed
       for (int j = 0; j < 4; ++j) {
         box[j] = enclose_root_number(X.scaled[j].a, X.scaled[j].b, X.discriminant, root, denominator);
-        tight = tight && is_tight(box[j]);
+        tight[j] = is_tight(box[j]);  // else some part underflowed or overflowed (a coordinate near 5e-324)
       }
-      if (tight) return box;
+      if (std::all_of(tight.begin(), tight.end(), [](bool t) { return t; })) return box;
     }
   }
   const int n = static_cast<int>(binary_exponent(X.denominator));  // D > 0
@@ -59,11 +64,11 @@ std::array<Interval, 4> enclose(const Vertex_coordinates<Exact>& X, long k = 0) 
   const Interval root = CGAL::sqrt(enclosing_interval(d));
   const Interval denominator = enclosing_interval(times_power_of_two(X.denominator, -n));
   // An ordinary X_j has parts a and b sqrt(d) about as large as D: the shift that brings D near 1 brings them
-  // near X_j, and their own exponents (each a conversion to Gmpq) are needed only where that is not tight.
+  // near X_j, and their own exponents are needed only where that is not tight.
   // Only for the plain box (k = 0): the X_j of a scaled box lie beyond the double range.
   const Exact down = times_power_of_two(Exact(1), -n), root_down = times_power_of_two(Exact(1), t - n);
-  std::array<Interval, 4> box;
   for (int j = 0; j < 4; ++j) {
+    if (tight[j]) continue;
     if (k == 0) {
       const Interval near_x = enclose_root_number(X.scaled[j].a * down, X.scaled[j].b * root_down, d, root, denominator);
       if (is_tight(near_x)) {
