@@ -2,6 +2,7 @@
 
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -46,19 +47,24 @@ Sign compare_with(const Root_number<Exact>& x, const Exact& m) {
   return compare(x, Root_number<Exact>{m, Exact(0), Exact(0), Exact(1)});
 }
 
-// x in `result`, rounded to 256 bits, without cancellation.
+// x in `result`, rounded to 256 bits, with at most 128 of them lost to cancellation (then within 2^-120 of
+// x): the direct sum, unless a and b sqrt(d) cancel further, and then (a^2 - b^2 d) / (a - b sqrt d), whose
+// exact numerator costs three products of the longest numbers.
 void approximate_into(const Root_number<Exact>& x, Mpfr& result) {
   Mpfr a(x.a), b(x.b), d(x.d), den(x.denominator);
   const Sign sa = certain_sign(x.a), sb = certain_sign(x.b);
   mpfr_sqrt(d.get(), d.get(), MPFR_RNDN);
-  if (sb == Sign::ZERO || sa == Sign::ZERO || sa == sb || certain_sign(x.d) == Sign::ZERO) {
-    mpfr_fma(result.get(), b.get(), d.get(), a.get(), MPFR_RNDN);  // a + b sqrt d, no cancellation
-  } else {
-    // a + b sqrt d = (a^2 - b^2 d) / (a - b sqrt d), where a and -b sqrt d have the same sign.
-    Mpfr numerator(x.a * x.a - x.b * x.b * x.d), conjugate;
-    mpfr_mul(conjugate.get(), b.get(), d.get(), MPFR_RNDN);
-    mpfr_sub(conjugate.get(), a.get(), conjugate.get(), MPFR_RNDN);
-    mpfr_div(result.get(), numerator.get(), conjugate.get(), MPFR_RNDN);
+  mpfr_fma(result.get(), b.get(), d.get(), a.get(), MPFR_RNDN);  // a + b sqrt d
+  if (sb != Sign::ZERO && sa != Sign::ZERO && sa != sb && certain_sign(x.d) != Sign::ZERO) {
+    Mpfr term;
+    mpfr_mul(term.get(), b.get(), d.get(), MPFR_RNDN);
+    const mpfr_exp_t largest = std::max(mpfr_get_exp(a.get()), mpfr_get_exp(term.get()));
+    if (mpfr_zero_p(result.get()) || mpfr_get_exp(result.get()) < largest - 128) {
+      // a and -b sqrt d have the same sign: the conjugate adds without cancellation.
+      Mpfr numerator(x.a * x.a - x.b * x.b * x.d);
+      mpfr_sub(term.get(), a.get(), term.get(), MPFR_RNDN);
+      mpfr_div(result.get(), numerator.get(), term.get(), MPFR_RNDN);
+    }
   }
   mpfr_div(result.get(), result.get(), den.get(), MPFR_RNDN);
 }

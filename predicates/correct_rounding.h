@@ -11,7 +11,7 @@ namespace apollonius {
 // to its neighbours confirm it or move it by one ulp. Overflows round to +-infinity.
 double to_nearest_double(const Root_number<Exact>& x);
 
-// A close approximation (MPFR, 256 bits, without cancellation), for estimates and error reports.
+// A close approximation (MPFR, 256 bits, within 2^-120 of x), for estimates and error reports.
 double approximate(const Root_number<Exact>& x);
 
 // An e with 2^(e - 2) <= |x| <= 2^(e + 1), from the same approximation, at any magnitude (where x beyond
