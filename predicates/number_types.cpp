@@ -13,14 +13,13 @@ Exact exact_integer(const CGAL::Gmpz& z) {
   return z < 0 ? -magnitude : magnitude;
 }
 
-// Mpzf::to_interval truncates x's top 53 bits to m and scales m exactly by 2^e: |x| lies in [m, m + 1) 2^e,
-// and m + 1 is at most the next power of two, so m 2^e, where a normal double, has x's exponent. Elsewhere
-// (beyond the double range, or subnormal) the exponent comes from the exact rational.
+// Where both bounds of x's enclosure are normal doubles of one binade, x lies in it too; else (beyond the
+// double range, subnormal, or an enclosure across a power of two) the exponent comes from the exact rational.
 long binary_exponent(const Exact& x) {
   const Interval enclosure = enclosing_interval(x);
   const double least = enclosure.inf() > 0 ? enclosure.inf() : -enclosure.sup();
-  // Both bounds finite: beyond 2^1024 CGAL scales by [DBL_MAX, inf], whose lower bound is no power of x.
-  if (least >= std::numeric_limits<double>::min() && std::isfinite(enclosure.inf()) && std::isfinite(enclosure.sup()))
+  const double most = enclosure.inf() > 0 ? enclosure.sup() : -enclosure.inf();
+  if (least >= std::numeric_limits<double>::min() && std::isfinite(most) && std::ilogb(least) == std::ilogb(most))
     return std::ilogb(least);
   const Rational q = static_cast<Rational>(x);  // denominator a power of two
   return static_cast<long>(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) - static_cast<long>(mpz_sizeinbase(mpq_denref(q.mpq()), 2));

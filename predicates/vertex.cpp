@@ -15,26 +15,23 @@
 namespace apollonius {
 namespace {
 
-// Whether x is finite and at most 2^-40 of its magnitude wide (0 is): an enclosure worth keeping.
-bool is_tight(const Interval& x) {
+// Whether x is finite and at most `relative_width` of its magnitude wide (0 is); at 2^-40, an enclosure worth
+// keeping.
+bool is_tight(const Interval& x, double relative_width = 0x1p-40) {
   const double magnitude = std::max(std::fabs(x.inf()), std::fabs(x.sup()));
-  return std::isfinite(magnitude) && x.sup() - x.inf() <= magnitude * 0x1p-40;
+  return std::isfinite(magnitude) && x.sup() - x.inf() <= magnitude * relative_width;
 }
 
 // An interval holding (a + b sqrt(d)) / denominator. Where a and b sqrt(d) have opposite signs it is taken
 // as (a^2 - b^2 d) / (a - b sqrt(d)), whose numerator is exact and whose denominator adds two numbers of one
 // sign, so that it stays a few ulps wide where the terms cancel (the vertex near its quadruple's sites
-// while the other root is far).
-// The direct quotient is tried first: the squares cost three products of the longest numbers, and are
-// needed only where the cancellation left it more than a few ulps (2^-48 of its magnitude) wide.
+// while the other root is far). That form costs three products of the longest numbers, so the direct
+// quotient is kept wherever it is a few ulps (2^-48 of its magnitude) wide already.
 Interval enclose_root_number(const Exact& a, const Exact& b, const Exact& d, const Interval& root,
                              const Interval& denominator) {
   const Interval direct = (enclosing_interval(a) + enclosing_interval(b) * root) / denominator;
   const Sign sa = certain_sign(a), sb = certain_sign(b);
-  const double magnitude = std::max(std::fabs(direct.inf()), std::fabs(direct.sup()));
-  if (sa == Sign::ZERO || sb == Sign::ZERO || sa == sb ||
-      (std::isfinite(magnitude) && direct.sup() - direct.inf() <= magnitude * 0x1p-48))
-    return direct;
+  if (sa == Sign::ZERO || sb == Sign::ZERO || sa == sb || is_tight(direct, 0x1p-48)) return direct;
   return enclosing_interval(a * a - b * b * d) / ((enclosing_interval(a) - enclosing_interval(b) * root) * denominator);
 }
 

@@ -1,5 +1,5 @@
-// binary_exponent (number_types.h) reads the exponent off Mpzf's interval where that is a normal double,
-// and off the exact rational elsewhere: 2^e <= |x| < 2^(e+1), checked exactly, at the double range's edges
+// binary_exponent (number_types.h) reads the exponent off Mpzf's interval where both bounds lie in one binade
+// of normal doubles, and off the exact rational elsewhere: 2^e <= |x| < 2^(e+1), checked exactly, at the double range's edges
 // (2^1023, 2^1024, the subnormals), on powers of two and numbers just below them (whose top bits would
 // round up), and on sums of products spread over the whole range.
 #include <doctest/doctest.h>
