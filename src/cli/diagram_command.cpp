@@ -3,6 +3,7 @@
 #include <chrono>
 #include <memory>
 
+#include "cli/octree_statistics_output.h"
 #include "io/write_topology.h"
 #include "octree/octree_diagram.h"
 #include "predicates/predicate_counter.h"
@@ -51,6 +52,7 @@ int run(const Diagram_command& command, std::ostream& out, std::ostream& err) {
         << "\nvertex_free " << topology.statistics.vertex_free_seconds << "\nfaces " << topology.statistics.faces_seconds
         << "\ntopology count\ncandidate_triples " << topology.statistics.candidate_triples << "\ncandidate_pairs "
         << topology.statistics.candidate_pairs << "\nnested_pairs " << topology.statistics.nested_pairs << '\n';
+    print_octree_statistics(err, octree_statistics);
   }
   release_or_keep_until_exit(std::move(topology));
   release_or_keep_until_exit(std::move(regions));

@@ -42,25 +42,12 @@ class Hider_tree {
       }
       return !(distance_squared.inf() > (weight_gap * weight_gap).sup());
     };
-    const std::vector<Site_tree::Node>& nodes = tree_.nodes();
-    const std::vector<Site_index>& order = tree_.order();
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const std::size_t k = stack.back();
-      stack.pop_back();
-      const Site_tree::Node& node = nodes[k];
-      if (!may_hide(node.lo, node.hi, node.heaviest)) continue;
-      if (node.right == 0) {
-        for (std::size_t m = node.begin; m < node.end; ++m) {
-          const Site_index j = order[m];
-          const std::array<double, 3> c{sites_[j].x, sites_[j].y, sites_[j].z};
-          if (j != i && may_hide(c, c, sites_[j].w)) hiders.push_back(j);
-        }
-      } else {
-        stack.push_back(node.right);
-        stack.push_back(k + 1);
-      }
-    }
+    tree_.search(may_hide,
+                 [&](Site_index j) {
+                   const std::array<double, 3> c{sites_[j].x, sites_[j].y, sites_[j].z};
+                   if (j != i && may_hide(c, c, sites_[j].w)) hiders.push_back(j);
+                 },
+                 stack);
   }
 
  private:

@@ -36,6 +36,27 @@ class Site_tree {
   static constexpr std::size_t kMostNearest = 8;
   std::size_t nearest(const std::array<double, 3>& x, std::size_t k, Site_index* out) const;
 
+  // Calls leaf_site(s) for each site s of the leaves reached through nodes that all pass
+  // may_hold(lo, hi, heaviest), depth first: for the searches whose certified bound excludes whole nodes.
+  // `stack` is scratch. Cost: the nodes tested, at most twice the sites over kLeafSize.
+  template <class May_hold, class Leaf_site>
+  void search(May_hold may_hold, Leaf_site leaf_site, std::vector<std::size_t>& stack) const {
+    if (nodes_.empty()) return;
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
+      const Node& node = nodes_[k];
+      if (!may_hold(node.lo, node.hi, node.heaviest)) continue;
+      if (node.right == 0) {
+        for (std::size_t m = node.begin; m < node.end; ++m) leaf_site(order_[m]);
+      } else {
+        stack.push_back(node.right);
+        stack.push_back(k + 1);
+      }
+    }
+  }
+
  private:
   static constexpr std::size_t kLeafSize = 8;
   void build(std::size_t begin, std::size_t end);

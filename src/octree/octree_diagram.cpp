@@ -82,6 +82,15 @@ class Lap_timer {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// Regions with no box: every active site escapes, and they are one far set.
+Octree_regions regions_without_boxes(const std::vector<Site_index>& active, bool lifted_fallback) {
+  Octree_regions regions;
+  regions.escaping = active;
+  if (active.size() >= 2) regions.far_sets.push_back(active);
+  regions.lifted_fallback = lifted_fallback;
+  return regions;
+}
+
 // The regions in input units: boxes scaled back by 2^exponent, exactly (powers of two) unless a bound
 // leaves the double range, which the whole diagram does not handle.
 void unscale_regions(Octree_regions& regions, int exponent) {
@@ -93,7 +102,7 @@ void unscale_regions(Octree_regions& regions, int exponent) {
         throw std::overflow_error("the octree's regions leave the double range in input units");
     }
   };
-  unscale(regions.root);
+  if (regions.has_octree) unscale(regions.root);
   for (Octree_regions::Box& b : regions.boxes) unscale(b.box);
 }
 
@@ -123,11 +132,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   std::vector<Hidden_site> hidden = classify_hidden_sites<Kernel>(input_sites, options.cancellation, options.threads);
   const std::vector<Site_index> active = active_sites(input_sites.size(), hidden);
   if (active.size() < 4) {
-    if (options.regions != nullptr) {  // no box: every site escapes, and they are one set
-      *options.regions = {};
-      options.regions->escaping = active;
-      if (active.size() >= 2) options.regions->far_sets.push_back(active);
-    }
+    if (options.regions != nullptr) *options.regions = regions_without_boxes(active, false);
     return assemble_diagram<Kernel>(input_sites.size(), std::move(hidden), std::vector<Diagram_vertex>{}, options.cancellation);
   }
   const int exponent = normalizing_exponent(input_sites, active);
@@ -153,14 +158,10 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
       may_go_at_once && !small_input && options.lifted_for_one_weight && has_one_weight(sites, active);
   const bool deep_input =
       may_go_at_once && !small_input && !one_weight && options.lifted_for_deep_inputs && has_deep_clusters(sites, active);
-  const std::size_t box_limit = options.regions != nullptr                 ? std::numeric_limits<std::size_t>::max()
-                                : small_input || one_weight || deep_input ? 0
-                                                                          : budget_boxes;
+  const std::size_t box_limit = small_input || one_weight || deep_input ? 0 : budget_boxes;
   Work_budget box_budget(box_limit);
-  Work_budget seed_budget(options.regions != nullptr ? std::numeric_limits<std::size_t>::max()
-                                                     : options.seed_candidate_budget.value_or(
-                                                           kSeedCandidatesPerSiteBeforeLifted * active.size() +
-                                                           kSeedCandidatesBeforeLifted));
+  Work_budget seed_budget(options.seed_candidate_budget.value_or(kSeedCandidatesPerSiteBeforeLifted * active.size() +
+                                                                 kSeedCandidatesBeforeLifted));
   // Every parallel step runs inside: --threads holds. More threads than the machine runs at once would
   // change nothing but make TBB print a warning.
   tbb::task_arena arena(threads);
@@ -274,6 +275,7 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     statistics.lifted_one_weight = one_weight;
     statistics.lifted_deep_input = deep_input;
     statistics.lifted_seed_candidates = seed_budget.exceeded();
+    if (options.regions != nullptr) *options.regions = regions_without_boxes(active, true);
     Lap_timer lifted_timer;
     arena.execute([&] {
       const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);

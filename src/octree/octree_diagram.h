@@ -10,9 +10,10 @@
 //     candidates remain (or refining stops helping, on degenerate input); each leaf decides the
 //     quadruples of its candidates exactly, keeping the vertices that lie in it (half-open).
 //  4. Far field (far_field.h): the vertices beyond R, by directions.
-//  5. The lifted fallback: when only the vertices are asked for (no regions) and the refinement passes a
-//     budget of boxes (512 per active site, plus 16,384), it stops and every vertex is taken from the
-//     3-faces of the active sites' lifted triangulation (lifted_vertices.h). Some degenerate inputs make
+//  5. The lifted fallback: when the refinement passes a budget of boxes (512 per active site, plus
+//     16,384), it stops and every vertex is taken from the 3-faces of the active sites' lifted
+//     triangulation (lifted_vertices.h); regions asked for (the whole diagram) then have no box
+//     (Octree_regions::lifted_fallback). Some degenerate inputs make
 //     the octree's box count grow far faster than the sites while the triangulation stays small: 1,000
 //     balls tangent to one circle, all tied at its centre, took over 120 s and 8 million boxes beside the
 //     circle; the triangulation of their lifts has 9,583 3-faces. On the benchmark inputs the octree uses
@@ -97,6 +98,10 @@ struct Octree_regions {
   Axis_box root;
   std::vector<Site_index> escaping;               // ascending
   std::vector<std::vector<Site_index>> far_sets;  // the far field's patches' sites (far_field.h), 2 or more
+  // No box because the refinement passed its budget (step 5): every active site escapes and they are one far
+  // set, which offers its lifted triangulation's triples (topology/vertex_free.h), not all of them as the
+  // reference's does.
+  bool lifted_fallback = false;
 };
 
 // Whether a box of the octree with the sites [first, last) (2 or more) is kept in Octree_regions::boxes:
@@ -114,10 +119,11 @@ struct Octree_options {
   // computation that is not cancelled is the same as without it.
   const Cancellation* cancellation = nullptr;
   // The boxes the refinement may spend before step 5 takes over; automatic (512 per active site, plus
-  // 16,384) when not given, and 0 goes to step 5 at once. Ignored (never spent) when regions are asked for.
+  // 16,384) when not given, and 0 goes to step 5 at once. Regions asked for are then those of
+  // Octree_regions::lifted_fallback.
   std::optional<std::size_t> box_budget{};
   // The (seed box, site) pairs the propagation may enter before step 5 takes over; automatic (128 per
-  // active site, plus 16,384) when not given. Ignored when regions are asked for.
+  // active site, plus 16,384) when not given. The same for regions.
   std::optional<std::size_t> seed_candidate_budget{};
   // Inputs of at most this many active sites go to step 5 at once, when only the vertices are asked for and
   // the arithmetic is certified (the floating path is the octree's, for comparison); 0: never.

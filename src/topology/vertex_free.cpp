@@ -22,6 +22,7 @@
 #include "predicates/sheet_point.h"
 #include "predicates/trisector_predicates.h"
 #include "predicates/trisector_rows.h"
+#include "topology/reaching_sites.h"
 #include "topology/region_site_sets.h"
 
 namespace apollonius {
@@ -101,6 +102,19 @@ std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& bas
 // a Gmpq geometry (about half a millisecond, and thousands of bits on a deep input).
 enum class Filtered_outcome { no_edge, edge, undecided };
 
+// The escaping sites to test a witness W against, where W lies in no box: all of them, or, for the lifted
+// fallback's regions (every active site escapes), those that may reach W (reaching_sites.h): W lies within
+// `box`, and a site that beats or ties `owner` (a site of the candidate) at W is within owner's distance.
+// The range lives until the thread's next call.
+Site_range escaping_near(const Octree_regions& regions, const Reaching_sites* reaching, const std::array<Interval, 3>& box,
+                         const Site& owner) {
+  if (reaching == nullptr) return range_of(regions.escaping);
+  thread_local std::vector<Site_index> near;
+  Rounding_guard guard;
+  reaching->find(box, weighted_distance_upper_bound(box, owner), near);
+  return range_of(near);
+}
+
 Interval in_double_range(const Interval& x) { return x; }
 template <class NT>
 Interval in_double_range(const NT& x) {  // Wide_interval, Mpfr_interval: infinite bounds beyond the range
@@ -110,7 +124,8 @@ Interval in_double_range(const NT& x) {  // Wide_interval, Mpfr_interval: infini
 template <class NT>
 Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, const Site& o,
                                      const std::vector<Site>& sites, const Octree_regions& regions,
-                                     const Region_site_sets& region_sets, const Occurrences& seen) {
+                                     const Region_site_sets& region_sets, const Occurrences& seen,
+                                     const Reaching_sites* reaching) {
   const NT half(0.5);
   const std::array<Interval, 3> v{in_double_range(NT(o.x) + X[0] * half), in_double_range(NT(o.y) + X[1] * half),
                                   in_double_range(NT(o.z) + X[2] * half)};
@@ -138,7 +153,7 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, c
     if (!test) return Filtered_outcome::no_edge;
   } else {
     if (!seen.far) return Filtered_outcome::undecided;
-    test = range_of(regions.escaping);
+    test = escaping_near(regions, reaching, v, sites[t.indices()[0]]);
   }
   bool all_farther = true;
   for (Site_index s : *test) {
@@ -188,6 +203,14 @@ class Located_witness {
       certain = certain && lo <= bounds_[k].first && bounds_[k].second <= hi;
     }
     return certain || curve_point_in_box(w_, box);
+  }
+
+  // The coordinates' enclosure in doubles, rounded outwards.
+  std::array<Interval, 3> enclosure() const {
+    std::array<Interval, 3> box;
+    for (int k = 0; k < 3; ++k)
+      box[k] = Interval(CGAL::to_interval(bounds_[k].first).first, CGAL::to_interval(bounds_[k].second).second);
+    return box;
   }
 
  private:
@@ -251,10 +274,11 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
   // The triples of a set of more than all_triples_up_to sites (a large set): the triangles of the lifted
   // triangulation of the union of all large sets, within the set, and those with a site whose lift is no
   // vertex of it; its pairs likewise, the edges and those with such a site (vertex_free.h). One triangulation
-  // for all: thousands of boxes of a hundred sites tied along an axis took one each. Without an octree (the
-  // reference) every triple and pair.
-  const std::size_t largest_with_all_triples =
-      regions.has_octree ? all_triples_up_to : std::numeric_limits<std::size_t>::max();
+  // for all: thousands of boxes of a hundred sites tied along an axis took one each. Without an octree, the
+  // reference offers every triple and pair; the lifted fallback's one far set is a large set like the others.
+  const std::size_t largest_with_all_triples = regions.has_octree || regions.lifted_fallback
+                                                   ? all_triples_up_to
+                                                   : std::numeric_limits<std::size_t>::max();
   std::vector<Site_index> in_large_sets;
   const auto gather_if_large = [&](const auto& set) {
     if (set.size() > largest_with_all_triples) in_large_sets.insert(in_large_sets.end(), set.begin(), set.end());
@@ -382,6 +406,10 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
   const auto triples =
       grouped(triple_seen, [](const auto& o) { return o.first[0]; }, [](const Triple&) { return false; });
 
+  // The lifted fallback's regions have no box: each witness is tested against the sites that may reach it.
+  const std::optional<Reaching_sites> reaching_storage =
+      regions.lifted_fallback ? std::optional<Reaching_sites>(std::in_place, sites, regions.escaping) : std::nullopt;
+  const Reaching_sites* reaching = reaching_storage ? &*reaching_storage : nullptr;
   const auto in_root = [&](const Curve_point& w) {
     return regions.has_octree && curve_point_in_box(w, regions.root);
   };
@@ -403,12 +431,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     {
       Rounding_guard guard;
       const std::optional<Vector4<Interval>> X = enclosed_canonical_point(t);
-      if (X) filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, region_sets, seen);
+      if (X) filtered = filtered_curve_test(t, *X, t.origin(), sites, regions, region_sets, seen, reaching);
       const auto try_framed = [&](auto number) {
         using NT = decltype(number);
         if (filtered == Filtered_outcome::undecided)
           if (const std::optional<Framed_curve_point<NT>> W = framed_enclosed_canonical_point<NT>(t))
-            filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, region_sets, seen);
+            filtered = filtered_curve_test(t, W->X, t.sites()[W->origin], sites, regions, region_sets, seen, reaching);
       };
       if (!X) try_framed(Wide_interval());  // its precision is the intervals': only where they left the range
       try_framed(Mpfr_interval());           // signs a hair from zero (a lattice one ulp off)
@@ -428,7 +456,8 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
         return test.has_value();
       });
     } else if (seen.far) {
-      test = range_of(regions.escaping);
+      test = reaching == nullptr ? range_of(regions.escaping)
+                                 : escaping_near(regions, reaching, Located_witness(w).enclosure(), sites[triple[0]]);
     }
     if (!test) return;  // W's region has not all three: the curve is no edge
     const std::optional<std::vector<Site_index>> tie = tie_at({triple.begin(), triple.end()}, *test, [&](Site_index s) {
@@ -470,7 +499,14 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       if (axis_point_in_box(a, b, regions.boxes[box].box)) test = range_of(regions.boxes[box].sites);
       return test.has_value();
     });
-    if (!test && !regions.has_octree && seen.far) test = range_of(regions.escaping);  // no octree: all escape
+    if (!test && !regions.has_octree && seen.far) {  // no octree: all escape
+      // The sheet's point lies on the segment between the centres, in their bounding box.
+      std::array<Interval, 3> box;
+      for (int k = 0; k < 3; ++k)
+        box[k] = Interval(std::min(centre_coordinate(a, k), centre_coordinate(b, k)),
+                          std::max(centre_coordinate(a, k), centre_coordinate(b, k)));
+      test = escaping_near(regions, reaching, box, a);
+    }
     if (!test) continue;
     const std::optional<std::vector<Site_index>> tie = tie_at({pair.first, pair.second}, *test, [&](Site_index s) {
       return axis_point_conflict(a, b, sites[s]);

@@ -31,6 +31,10 @@
 // it is found from any triple offered, and kept once. One triangulation serves every large set: on balls
 // tied along an axis, thousands of boxes of a hundred sites each took one apiece. The reference (no octree)
 // offers every triple and pair, so that it stays the simple computation the tests trust.
+// The lifted fallback (octree_diagram.h, step 5: the octree passed its box budget) leaves no box: every
+// active site escapes and they are one far set, a large set like the others. Its witnesses are tested
+// against the sites that may reach them (reaching_sites.h: a site left out is strictly farther than the
+// triple at every point of W's enclosure), found in a kd-tree instead of a box.
 // Boxes with the same sites offer the same candidates, so each distinct set of the boxes (region_site_sets.h)
 // is listed once, and a candidate's boxes are those of its sets.
 // Cost: O(b k) to group b boxes of at most k sites; O(k^3) triples per distinct set of k <= all_triples_up_to
@@ -38,7 +42,8 @@
 // edges within the set (O(k) to O(k^2)) and k^2 per site whose lift is no vertex; those kept are sorted and
 // grouped; each candidate with no vertex costs one classification, and those that pass the escaping test
 // one witness, filtered (in intervals, then in wide intervals where those leave the double range), tested
-// in parallel with `threads`.
+// in parallel with `threads`. For the lifted fallback, O(u log u) for the kd-tree, and per witness the
+// tree's nodes that its enclosure does not exclude (all u where the enclosure leaves the double range).
 #pragma once
 
 #include <utility>

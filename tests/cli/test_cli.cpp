@@ -350,6 +350,16 @@ TEST_CASE("diagram: the whole diagram as JSON or topology, the same for every th
   CHECK(one.find("\"faces\"") != std::string::npos);
   CHECK(run({"diagram", random, "--threads", "2"}).out == one);
   CHECK(run({"diagram", random, "--threads", "3"}).out == one);
+  CHECK(run({"diagram", random, "--stats"}).err.find("lifted fallback") == std::string::npos);
+
+  // Balls tangent to one circle: the octree passes its box budget, and --stats says so; the diagram is the
+  // same for every thread count.
+  const std::string tangent = scratch.path("circle-tangent.balls");
+  REQUIRE(run({"generate", "circle-tangent", "--n", "200", "--seed", "2", "-o", tangent}).code == EXIT_OK);
+  const Cli_result fallback = run({"diagram", tangent, "--stats"});
+  REQUIRE(fallback.code == EXIT_OK);
+  CHECK(fallback.err.find("lifted fallback\nlifted_reason box_budget") != std::string::npos);
+  CHECK(run({"diagram", tangent, "--threads", "2"}).out == run({"diagram", tangent}).out);
 
   // Bad input: file:line and reason, exit 2, no output file.
   const std::string bad = scratch.write("bad.balls", "0 0 0 1\n1 2 x 1\n");

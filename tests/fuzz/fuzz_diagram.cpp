@@ -1,5 +1,6 @@
 // libFuzzer target: the whole diagram of a small site set decoded from the bytes (fuzz_sites.h), built
-// from the brute-force vertices with every site a candidate, and from the octree's vertices and regions.
+// from the brute-force vertices with every site a candidate, and from the octree's vertices and regions,
+// and from the lifted fallback's (no box).
 // Both must equal: the same edges as the brute-force edge reference, the same faces and cells, and the
 // Euler relation must hold; and the edges through vertices with every tie set of 4 or more sites listed by
 // its star of directions (departure_star.h) equal those from every triple. A disagreement prints the sites
@@ -84,5 +85,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Diagram_topology octree = build_topology(sites, vertices, regions);
   if (!same_edges(octree.edges, brute.edges) || !same_faces_and_cells(octree, brute))
     report("the octree's regions and every-site candidates give different diagrams", sites);
+
+  // The lifted fallback (octree_diagram.h, step 5), forced by a box budget of 0: regions with no box.
+  Octree_regions no_boxes;
+  Octree_options fallback{1, nullptr, Arithmetic::certified, &no_boxes};
+  fallback.box_budget = 0;
+  const Diagram_topology lifted = build_topology(sites, octree_diagram(sites, fallback), no_boxes);
+  if (!same_edges(lifted.edges, brute.edges) || !same_faces_and_cells(lifted, brute))
+    report("the lifted fallback's regions and every-site candidates give different diagrams", sites);
   return 0;
 }

@@ -228,7 +228,7 @@ TEST_CASE("the output does not depend on the number of threads") {
 }
 
 // The octree's budget (octree_diagram.h, step 5): spent, the vertices come from the lifted triangulation,
-// the same as the octree's own; never spent when the whole diagram's regions are asked for.
+// the same as the octree's own; with the whole diagram's regions asked for too, which then have no box.
 TEST_CASE("the octree turns to the lifted triangulation once its box budget is spent") {
   const std::vector<Site> sites = generate_sites(Site_family::circle_tangent, 60, 3);
   Octree_statistics unlimited_statistics;
@@ -256,8 +256,22 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     with_regions.box_budget = 2048;
     with_regions.regions = &regions;
     check_same(octree_diagram(sites, with_regions), octree);
-    CHECK_FALSE(with_regions_statistics.lifted_fallback);
-    CHECK(with_regions_statistics.boxes == unlimited_statistics.boxes);
+    CHECK(with_regions_statistics.lifted_fallback);
+    CHECK(regions.lifted_fallback);
+    CHECK_FALSE(regions.has_octree);
+    CHECK(regions.boxes.empty());
+    CHECK(regions.escaping.size() == sites.size() - octree.hidden.size());
+    REQUIRE(regions.far_sets.size() == 1);
+    CHECK(regions.far_sets[0] == regions.escaping);
+
+    Octree_regions unlimited_regions;
+    Octree_options unlimited_with_regions{threads};
+    unlimited_with_regions.regions = &unlimited_regions;
+    unlimited_with_regions.octree_alone();
+    check_same(octree_diagram(sites, unlimited_with_regions), octree);
+    CHECK(unlimited_regions.has_octree);
+    CHECK_FALSE(unlimited_regions.lifted_fallback);
+    CHECK_FALSE(unlimited_regions.boxes.empty());
   }
 }
 
@@ -266,7 +280,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
 // hundreds of the cluster's sites into each (over 128 per site here; 6,000 per site beside BALL_SMALL_10000);
 // each box's nearest sites (candidate_propagation.h, pass 1) keep them few, and the octree refines. The
 // budget of seed candidates (octree_diagram.h, step 5) stays as a bound: past it, the lifted triangulation
-// gives the octree's output, before any box is refined; never when regions are asked for.
+// gives the octree's output, before any box is refined; regions asked for then have no box.
 TEST_CASE("a ball far from a cluster keeps its seed candidates few; past their budget, the lifted triangulation") {
   std::vector<Site> sites = generate_sites(Site_family::uniform, 1000, 3);
   sites.push_back({1e6, 0, 0, 1});
@@ -303,8 +317,9 @@ TEST_CASE("a ball far from a cluster keeps its seed candidates few; past their b
       with_regions.regions = &regions;
       with_regions.seed_candidate_budget = budget;
       check_same(octree_diagram(sites, with_regions), lifted);
-      CHECK_FALSE(with_regions_statistics.lifted_fallback);
-      CHECK(with_regions_statistics.seed_candidates == statistics.seed_candidates);
+      CHECK(with_regions_statistics.lifted_fallback);
+      CHECK(with_regions_statistics.lifted_seed_candidates);
+      CHECK(regions.lifted_fallback);
     }
   }
   // The same on an ordinary input; the box budget's reason stays apart.

@@ -47,16 +47,22 @@ bool tie_heavy(const std::string& name) {
 }
 
 // The production path (the octree's vertices, and its regions as the source of vertex-free candidates)
-// gives the same whole diagram as the brute-force vertices with every site a candidate everywhere.
-void check_octree_path(const std::vector<Site>& sites, const Diagram_topology& expected) {
+// gives the same whole diagram as the brute-force vertices with every site a candidate everywhere; and so
+// does the lifted fallback (octree_diagram.h, step 5: no box, one far set), forced by a box budget of 0.
+void check_octree_path(const std::vector<Site>& sites, const Diagram_topology& expected, bool lifted_fallback) {
+  CAPTURE(lifted_fallback);
   Octree_regions regions;
+  Octree_options options{1, nullptr, Arithmetic::certified, &regions};
+  if (lifted_fallback) options.box_budget = 0;
   Diagram_topology t;
   try {
-    t = build_topology(sites, octree_diagram(sites, Octree_options{1, nullptr, Arithmetic::certified, &regions}), regions);
+    t = build_topology(sites, octree_diagram(sites, options), regions);
   } catch (const std::logic_error& e) {
     FAIL_CHECK("octree path: " << std::string(e.what()));
     return;
   }
+  // Fewer than 4 active sites have no octree to fall back from.
+  if (sites.size() - t.vertices.hidden.size() >= 4) CHECK(regions.lifted_fallback == lifted_fallback);
   REQUIRE(t.vertices.vertices.size() == expected.vertices.vertices.size());
   for (std::size_t v = 0; v < t.vertices.vertices.size(); ++v)
     CHECK(t.vertices.vertices[v].tie_set == expected.vertices.vertices[v].tie_set);
@@ -106,7 +112,8 @@ std::optional<std::vector<Diagram_edge>> check_against_reference(const std::vect
   }
   CHECK(t.edges.size() == reference.size());
   CHECK(euler_defect(t) == 0);
-  check_octree_path(sites, t);
+  check_octree_path(sites, t, false);
+  check_octree_path(sites, t, true);
   return reference;
 }
 

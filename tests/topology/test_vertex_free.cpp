@@ -11,9 +11,11 @@
 #include <chrono>
 #include <cstdlib>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "io/write_topology.h"
 #include "octree/octree_diagram.h"
 #include "reference/brute_force_diagram.h"
 #include "reference/site_generators.h"
@@ -52,15 +54,18 @@ TEST_CASE("vertex-free parts from the triples of lifted triangulations equal tho
     // Fewer sites where the topology is slow (deep octrees, long exact numbers).
     const bool slow = f.family == Site_family::wide_range || f.family == Site_family::lattice_noise;
     for (const std::size_t n : slow ? std::vector<std::size_t>{8, 14} : std::vector<std::size_t>{12, 40}) {
-      for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+      for (std::uint64_t seed = 1; seed <= seeds; ++seed)
+      for (const bool lifted_fallback : {false, true}) {  // the octree's regions, or none (a box budget of 0)
         const std::string family = f.name;
         CAPTURE(family);
         CAPTURE(n);
         CAPTURE(seed);
+        CAPTURE(lifted_fallback);
         const std::vector<Site> sites = generate_sites(f.family, n, seed);
         Octree_regions regions;
         Octree_options options;
         options.regions = &regions;
+        if (lifted_fallback) options.box_budget = 0;
         const auto start = std::chrono::steady_clock::now();
         Diagram_topology topology;
         try {
@@ -148,6 +153,7 @@ TEST_CASE("balls on one circle with mixed weights: thousands of tied boxes share
   Octree_regions regions;
   Octree_options options;
   options.regions = &regions;
+  options.octree_alone();  // the boxes, past the budget that would turn to the lifted fallback
   const Diagram_topology topology = build_topology(sites, octree_diagram(sites, options), regions);
   validate_topology(sites, topology);
   CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < time_limit);
@@ -159,4 +165,16 @@ TEST_CASE("balls on one circle with mixed weights: thousands of tied boxes share
   CHECK(topology.edges.size() == 65);
   CHECK(topology.faces.size() == 242);
   CHECK(topology.cells.size() == 178);
+
+  // By default the octree spends its budget (512 boxes per active site, plus 16,384) and stops: the lifted
+  // fallback's regions, one far set that offers its triangulation's triples, give the same diagram.
+  Octree_regions fallback_regions;
+  Octree_options by_default;
+  by_default.regions = &fallback_regions;
+  const Diagram_topology fallback = build_topology(sites, octree_diagram(sites, by_default), fallback_regions);
+  CHECK(fallback_regions.lifted_fallback);
+  std::ostringstream expected, got;
+  write_diagram_json(expected, topology, nullptr);
+  write_diagram_json(got, fallback, nullptr);
+  CHECK(got.str() == expected.str());
 }
