@@ -23,7 +23,6 @@ void Reaching_sites::find(const std::array<Interval, 3>& box, double reach, std:
   out.clear();
   if (!(reach < std::numeric_limits<double>::infinity())) {  // no bound (an enclosure beyond the double range)
     out = tree_.order();
-    std::sort(out.begin(), out.end());
     return;
   }
   Rounding_guard guard;
@@ -47,7 +46,6 @@ void Reaching_sites::find(const std::array<Interval, 3>& box, double reach, std:
                  if (may_reach(c, c, sites_[s].w)) out.push_back(s);
                },
                stack);
-  std::sort(out.begin(), out.end());
 }
 
 double weighted_distance_upper_bound(const std::array<Interval, 3>& box, const Site& s) {

@@ -17,7 +17,7 @@ class Reaching_sites {
   // Cost O(n log n) for the n sites of `subset`.
   Reaching_sites(const std::vector<Site>& sites, std::vector<Site_index> subset);
 
-  // Sets `out` to the sites of the subset, ascending, for which d_s(x) <= reach may hold at some x of `box`
+  // Sets `out` to the sites of the subset, in no set order, for which d_s(x) <= reach may hold at some x of `box`
   // (bounds may be infinite). Certified: a site left out has d_s(x) > reach on the whole box (intervals
   // under a Rounding_guard). Cost: the nodes of the tree whose bound does not exclude them.
   void find(const std::array<Interval, 3>& box, double reach, std::vector<Site_index>& out) const;

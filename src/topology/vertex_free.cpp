@@ -69,7 +69,8 @@ void for_boxes(const Region_site_sets& region_sets, const Occurrences& seen, Vis
       if (visit(b)) return;
 }
 
-// The sites of a region box or the escaping sites, ascending.
+// The sites of a region box or the escaping sites, ascending; or those that may reach a witness, in any order
+// (a witness's tests do not depend on it).
 struct Site_range {
   const Site_index* first;
   const Site_index* last;
@@ -102,12 +103,12 @@ std::optional<std::vector<Site_index>> tie_at(const std::vector<Site_index>& bas
 // a Gmpq geometry (about half a millisecond, and thousands of bits on a deep input).
 enum class Filtered_outcome { no_edge, edge, undecided };
 
-// The escaping sites to test a witness W against, where W lies in no box: all of them, or, for the lifted
-// fallback's regions (every active site escapes), those that may reach W (reaching_sites.h): W lies within
-// `box`, and a site that beats or ties `owner` (a site of the candidate) at W is within owner's distance.
-// The range lives until the thread's next call.
-Site_range escaping_near(const Octree_regions& regions, const Reaching_sites* reaching, const std::array<Interval, 3>& box,
-                         const Site& owner) {
+// The sites to test a witness W against, where W lies in no box: the escaping ones, or, for the lifted
+// fallback's regions, those of its one far set (every active site) that may reach W (reaching_sites.h):
+// W lies within `box`, and a site that beats or ties `owner` (a site of the candidate) at W is within
+// owner's distance. The range lives until the thread's next call.
+Site_range witness_sites(const Octree_regions& regions, const Reaching_sites* reaching,
+                         const std::array<Interval, 3>& box, const Site& owner) {
   if (reaching == nullptr) return range_of(regions.escaping);
   thread_local std::vector<Site_index> near;
   Rounding_guard guard;
@@ -153,7 +154,7 @@ Filtered_outcome filtered_curve_test(const Trisector& t, const Vector4<NT>& X, c
     if (!test) return Filtered_outcome::no_edge;
   } else {
     if (!seen.far) return Filtered_outcome::undecided;
-    test = escaping_near(regions, reaching, v, sites[t.indices()[0]]);
+    test = witness_sites(regions, reaching, v, sites[t.indices()[0]]);
   }
   bool all_farther = true;
   for (Site_index s : *test) {
@@ -408,7 +409,9 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
 
   // The lifted fallback's regions have no box: each witness is tested against the sites that may reach it.
   const std::optional<Reaching_sites> reaching_storage =
-      regions.lifted_fallback ? std::optional<Reaching_sites>(std::in_place, sites, regions.escaping) : std::nullopt;
+      regions.lifted_fallback && !regions.far_sets.empty()
+          ? std::optional<Reaching_sites>(std::in_place, sites, regions.far_sets.front())
+          : std::nullopt;
   const Reaching_sites* reaching = reaching_storage ? &*reaching_storage : nullptr;
   const auto in_root = [&](const Curve_point& w) {
     return regions.has_octree && curve_point_in_box(w, regions.root);
@@ -457,7 +460,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       });
     } else if (seen.far) {
       test = reaching == nullptr ? range_of(regions.escaping)
-                                 : escaping_near(regions, reaching, Located_witness(w).enclosure(), sites[triple[0]]);
+                                 : witness_sites(regions, reaching, Located_witness(w).enclosure(), sites[triple[0]]);
     }
     if (!test) return;  // W's region has not all three: the curve is no edge
     const std::optional<std::vector<Site_index>> tie = tie_at({triple.begin(), triple.end()}, *test, [&](Site_index s) {
@@ -505,7 +508,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       for (int k = 0; k < 3; ++k)
         box[k] = Interval(std::min(centre_coordinate(a, k), centre_coordinate(b, k)),
                           std::max(centre_coordinate(a, k), centre_coordinate(b, k)));
-      test = escaping_near(regions, reaching, box, a);
+      test = witness_sites(regions, reaching, box, a);
     }
     if (!test) continue;
     const std::optional<std::vector<Site_index>> tie = tie_at({pair.first, pair.second}, *test, [&](Site_index s) {

@@ -1,6 +1,6 @@
 // Reaching_sites (the sites that may be within a reach of a point known within a box) against the exact
 // condition at points of the box: every site with d_s(x) <= reach at a sampled x, decided in rationals, is
-// found; the answer is ascending, from the subset, and, for boxes away from most sites, a small part of it.
+// found; the answer holds each site once, from the subset, and, for boxes away from most sites, a small part of it.
 // Random sites of every generator family and random boxes; a failure prints the family and seed.
 #include <doctest/doctest.h>
 
@@ -56,10 +56,10 @@ TEST_CASE("Reaching_sites finds every site within the reach somewhere in the box
           box[a] = q % 5 == 0 ? Interval(centre[a]) : Interval(centre[a] - half, centre[a] + half);
         const double reach = (static_cast<double>(random() % 4001) / 1000 - 2) * (half + 1);
         reaching.find(box, reach, out);
+        std::sort(out.begin(), out.end());
         ++queries;
         found += out.size();
         offered += subset.size();
-        CHECK(std::is_sorted(out.begin(), out.end()));
         CHECK(std::adjacent_find(out.begin(), out.end()) == out.end());
         for (Site_index t : out) CHECK(std::binary_search(subset.begin(), subset.end(), t));
         // Points of the box: its corners, its centre and random ones.
@@ -93,8 +93,10 @@ TEST_CASE("Reaching_sites: unbounded boxes, infinite reaches, and an empty subse
   std::vector<Site_index> out;
   const double inf = std::numeric_limits<double>::infinity();
   reaching.find({Interval(-inf, inf), Interval(-inf, inf), Interval(-inf, inf)}, 0, out);  // every weight is positive
+  std::sort(out.begin(), out.end());
   CHECK(out == all);
   reaching.find({Interval(0), Interval(0), Interval(0)}, inf, out);
+  std::sort(out.begin(), out.end());
   CHECK(out == all);
   reaching.find({Interval(1e300), Interval(1e300), Interval(1e300)}, 1, out);
   CHECK(out.empty());
