@@ -48,8 +48,11 @@ constexpr std::size_t kReservedVerticesPerSite = 8;
 // balls and proteins make (docs/benchmarks.md, "Lists that never move"); ties make far more, and the list grows.
 constexpr std::size_t kReservedRegionBoxesPerSite = 16;
 
-// The refinement's budget when only the vertices are asked for (octree_diagram.h, step 5).
+// The refinement's budget (octree_diagram.h, step 5). Twice as many boxes when regions are asked for: past
+// the budget the whole diagram's vertex-free search has no box and costs more than the boxes would have
+// (sphere-tangent 4,000 refines 646 boxes per site: 9.7 s with them, 20.6 s past 512; docs/benchmarks.md).
 constexpr std::size_t kBoxesPerSiteBeforeLifted = 512;
+constexpr std::size_t kRegionBoxesPerSiteBeforeLifted = 1024;
 constexpr std::size_t kBoxesBeforeLifted = 16384;
 // The propagation's budget: seed candidates, (seed box, site) pairs. The benchmark inputs and the generated
 // families enter 5 to 55 per site, a cluster beside one ball 10^6 to 10^12 away 9 to 34 (docs/benchmarks.md,
@@ -149,7 +152,9 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
   });
   std::vector<std::vector<Found_vertex>> lists;
   const std::size_t budget_boxes =
-      options.box_budget.value_or(kBoxesPerSiteBeforeLifted * active.size() + kBoxesBeforeLifted);
+      options.box_budget.value_or((options.regions != nullptr ? kRegionBoxesPerSiteBeforeLifted : kBoxesPerSiteBeforeLifted) *
+                                      active.size() +
+                                  kBoxesBeforeLifted);
   // A budget of 0 (step 5 asked for) is its own reason, for --stats.
   const bool may_go_at_once =
       options.regions == nullptr && options.arithmetic == Arithmetic::certified && budget_boxes > 0;

@@ -11,7 +11,7 @@
 //     quadruples of its candidates exactly, keeping the vertices that lie in it (half-open).
 //  4. Far field (far_field.h): the vertices beyond R, by directions.
 //  5. The lifted fallback: when the refinement passes a budget of boxes (512 per active site, plus
-//     16,384), it stops and every vertex is taken from the 3-faces of the active sites' lifted
+//     16,384; 1,024 per site when regions are asked for), it stops and every vertex is taken from the 3-faces of the active sites' lifted
 //     triangulation (lifted_vertices.h); regions asked for (the whole diagram) then have no box
 //     (Octree_regions::lifted_fallback). Some degenerate inputs make
 //     the octree's box count grow far faster than the sites while the triangulation stays small: 1,000
@@ -119,7 +119,7 @@ struct Octree_options {
   // computation that is not cancelled is the same as without it.
   const Cancellation* cancellation = nullptr;
   // The boxes the refinement may spend before step 5 takes over; automatic (512 per active site, plus
-  // 16,384) when not given, and 0 goes to step 5 at once. Regions asked for are then those of
+  // 16,384; 1,024 per site with regions) when not given, and 0 goes to step 5 at once. Regions asked for are then those of
   // Octree_regions::lifted_fallback.
   std::optional<std::size_t> box_budget{};
   // The (seed box, site) pairs the propagation may enter before step 5 takes over; automatic (128 per

@@ -166,7 +166,7 @@ TEST_CASE("balls on one circle with mixed weights: thousands of tied boxes share
   CHECK(topology.faces.size() == 242);
   CHECK(topology.cells.size() == 178);
 
-  // By default the octree spends its budget (512 boxes per active site, plus 16,384) and stops: the lifted
+  // By default the octree spends its budget (1,024 boxes per active site, plus 16,384) and stops: the lifted
   // fallback's regions, one far set that offers its triangulation's triples, give the same diagram.
   Octree_regions fallback_regions;
   Octree_options by_default;
