@@ -1,11 +1,13 @@
 #include "topology/vertex_free.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <limits>
-#include <stdexcept>
 #include <memory>
 #include <optional>
+#include <shared_mutex>
+#include <stdexcept>
 
 #include <boost/container/small_vector.hpp>
 #include <tbb/parallel_for.h>
@@ -219,6 +221,43 @@ class Located_witness {
   std::array<std::pair<Rational, Rational>, 3> bounds_;
 };
 
+// The vertex-free curves of more than three tied sites found so far. Each is the whole trisector of every
+// triple of its tie set (a trisector is one connected curve, and a vertex-free edge is all of it), so such a
+// triple would find the same edge again: it is skipped. Without this, balls of one weight on one circle, k
+// of them tied along its axis, cost k triples times k exact tests (circle-mixed 4,000: 1.7 million, 15 s).
+// Shared by the threads; which triple finds a curve first does not change the edges kept.
+class Found_curves {
+ public:
+  explicit Found_curves(std::size_t site_count) : site_count_(site_count) {}
+
+  bool covers(const Triple& t) const {
+    if (!any_.load(std::memory_order_acquire)) return false;
+    std::shared_lock lock(mutex_);
+    for (std::uint32_t curve : curves_of_site_[t[0]]) {
+      const std::vector<Site_index>& tie = tie_sets_[curve];
+      if (std::binary_search(tie.begin(), tie.end(), t[1]) && std::binary_search(tie.begin(), tie.end(), t[2]))
+        return true;
+    }
+    return false;
+  }
+
+  void add(const std::vector<Site_index>& tie_set) {  // ascending, more than three sites
+    std::unique_lock lock(mutex_);
+    if (curves_of_site_.empty()) curves_of_site_.resize(site_count_);
+    const auto curve = static_cast<std::uint32_t>(tie_sets_.size());
+    tie_sets_.push_back(tie_set);
+    for (Site_index s : tie_set) curves_of_site_[s].push_back(curve);
+    any_.store(true, std::memory_order_release);
+  }
+
+ private:
+  std::size_t site_count_;
+  std::atomic<bool> any_{false};
+  mutable std::shared_mutex mutex_;
+  std::vector<std::vector<Site_index>> tie_sets_;
+  std::vector<std::vector<std::uint32_t>> curves_of_site_;  // empty until the first curve; ids into tie_sets_
+};
+
 }  // namespace
 
 Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Diagram& diagram,
@@ -419,9 +458,11 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
   // Each candidate's test is independent: in parallel, each into its own slot. (Pointers: few candidates
   // are edges, and a million empty edges took a fifth of a second to allocate.)
   std::vector<std::unique_ptr<Diagram_edge>> found(triples.size());
+  Found_curves found_curves(sites.size());
   const auto test_triple = [&](std::size_t c) {
     throw_if_cancelled(cancellation);  // a throw cancels the parallel loop
     const Triple& triple = triples[c].first;  // not a structured binding: the lambda below captures it
+    if (found_curves.covers(triple)) return;
     const Occurrences& seen = triples[c].second;
     const Trisector t(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
     const auto [kind, shape] = classify_trisector(t);
@@ -467,6 +508,7 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       return curve_point_conflict(w, sites[s]);
     });
     if (!tie) return;  // not in it
+    if (tie->size() > 3) found_curves.add(*tie);
     e.tie_set = *tie;
     found[c] = std::make_unique<Diagram_edge>(std::move(e));
   };
@@ -479,8 +521,9 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
     if (found[c]) parts.edges.push_back(std::move(*found[c]));
   }
   std::vector<std::unique_ptr<Diagram_edge>>().swap(found);
-  // A curve of k > 3 tied sites is every one of its triples' whole trisector, found by each offered triple:
-  // once. (The smallest triple would not do: a triangulated set need not offer it.)
+  // A curve of k > 3 tied sites is every one of its triples' whole trisector: found by the first of them
+  // tested (Found_curves), or by a few at once on several threads: once. (The smallest triple would not do: a
+  // triangulated set need not offer it.)
   cancellable_sort(parts.edges.begin(), parts.edges.end(), cancellation,
                    [](const Diagram_edge& x, const Diagram_edge& y) { return x.tie_set < y.tie_set; });
   parts.edges.erase(std::unique(parts.edges.begin(), parts.edges.end(),

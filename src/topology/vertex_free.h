@@ -28,7 +28,7 @@
 // edges of it, offered by a large set holding T and W (a box containing W, or the patch whose cone does);
 // for a whole sheet of a and b, at its point between them, the same for two sites (two lifts of sites
 // that are not hidden differ). A curve of k > 3 tied sites is every one of its triples' whole trisector:
-// it is found from any triple offered, and kept once. One triangulation serves every large set: on balls
+// it is found from any triple offered, kept once, and the triples within its tie set are not tested again. One triangulation serves every large set: on balls
 // tied along an axis, thousands of boxes of a hundred sites each took one apiece. The reference (no octree)
 // offers every triple and pair, so that it stays the simple computation the tests trust.
 // The lifted fallback (octree_diagram.h, step 5: the octree passed its box budget) leaves no box: every
@@ -42,7 +42,8 @@
 // edges within the set (O(k) to O(k^2)) and k^2 per site whose lift is no vertex; those kept are sorted and
 // grouped; each candidate with no vertex costs one classification, and those that pass the escaping test
 // one witness, filtered (in intervals, then in wide intervals where those leave the double range), tested
-// in parallel with `threads`. For the lifted fallback, O(u log u) for the kd-tree, and per witness the
+// in parallel with `threads`, except those within the tie set of a curve of more than three sites found
+// already (k tied sites: k tests, not k^2). For the lifted fallback, O(u log u) for the kd-tree, and per witness the
 // tree's nodes that its enclosure does not exclude (all u where the enclosure leaves the double range).
 #pragma once
 

@@ -17,6 +17,7 @@
 
 #include "io/write_topology.h"
 #include "octree/octree_diagram.h"
+#include "predicates/predicate_counter.h"
 #include "reference/brute_force_diagram.h"
 #include "reference/site_generators.h"
 #include "topology/build_topology.h"
@@ -177,4 +178,36 @@ TEST_CASE("balls on one circle with mixed weights: thousands of tied boxes share
   write_diagram_json(expected, topology, nullptr);
   write_diagram_json(got, fallback, nullptr);
   CHECK(got.str() == expected.str());
+}
+
+TEST_CASE("one curve of many tied balls costs one test per site, not one per site and triple") {
+  // Regression: `generate circle-mixed --n 4000 --seed 2` keeps 1,298 balls of one weight on one circle, tied
+  // along its axis. The lifted fallback's one far set offered 1,296 triples of them, each tested exactly
+  // against every site: 1.7 million exact tests (15 s). The first triple's test finds the whole tie set, and
+  // the triples within it are not tested again.
+  const std::vector<Site> sites = generate_sites(Site_family::circle_mixed, 4000, 2);
+  for (const int threads : {1, 2}) {
+    CAPTURE(threads);
+    Octree_regions regions;
+    Octree_options options;
+    options.regions = &regions;
+    const Diagram diagram = octree_diagram(sites, options);
+    REQUIRE(regions.far_sets.size() == 1);
+    const std::size_t active = regions.far_sets.front().size();
+    CHECK(active == 1298);
+    reset_predicate_statistics();
+    Topology_options topology_options;
+    topology_options.threads = threads;
+    const Diagram_topology topology = build_topology(sites, diagram, regions, topology_options);
+    std::uint64_t tests = 0;
+    for (const Predicate_statistics& p : predicate_statistics())
+      if (p.name == "curve_point_conflict") tests = p.evaluations;
+    validate_topology(sites, topology);
+    REQUIRE(topology.edges.size() == 1);
+    CHECK(topology.edges.front().tie_set.size() == active);
+    CHECK(topology.edges.front().curve == Curve_shape::line);
+    // Each thread's first triple may test every site before another's curve is known.
+    CHECK(tests >= active - 3);
+    CHECK(tests <= static_cast<std::uint64_t>(threads) * active);
+  }
 }
