@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <vector>
@@ -283,9 +284,10 @@ Diagram octree_diagram_with(const std::vector<Site>& input_sites, const Octree_o
     if (options.regions != nullptr) *options.regions = regions_without_boxes(active, true);
     Lap_timer lifted_timer;
     arena.execute([&] {
-      const Lifted_triangulation lifts = lifted_triangulation(sites, active, options.cancellation);
-      statistics.lifted_quadruples = lifts.quadruples.size();
-      lists.push_back(lifted_vertices<Kernel>(sites, lifts, [](const Vertex&) { return true; }, options.cancellation));
+      auto lifts = std::make_shared<const Lifted_triangulation>(lifted_triangulation(sites, active, options.cancellation));
+      statistics.lifted_quadruples = lifts->quadruples.size();
+      lists.push_back(lifted_vertices<Kernel>(sites, *lifts, [](const Vertex&) { return true; }, options.cancellation));
+      if (options.regions != nullptr) options.regions->lifts = std::move(lifts);
     });
     statistics.lifted_seconds = lifted_timer.lap();
     timer.lap();

@@ -327,8 +327,12 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
   for (const std::vector<Site_index>& set : regions.far_sets) gather_if_large(set);
   std::sort(in_large_sets.begin(), in_large_sets.end());
   in_large_sets.erase(std::unique(in_large_sets.begin(), in_large_sets.end()), in_large_sets.end());
-  const Lifted_triangulation lifts = in_large_sets.empty() ? Lifted_triangulation{}
-                                                           : lifted_triangulation(sites, in_large_sets, cancellation);
+  std::shared_ptr<const Lifted_triangulation> lifts_storage = regions.lifts;  // the lifted fallback's, if of U
+  if (in_large_sets.empty())
+    lifts_storage = std::make_shared<const Lifted_triangulation>();
+  else if (lifts_storage == nullptr || lifts_storage->sites != in_large_sets)
+    lifts_storage = std::make_shared<const Lifted_triangulation>(lifted_triangulation(sites, in_large_sets, cancellation));
+  const Lifted_triangulation& lifts = *lifts_storage;
   std::vector<bool> in_set(in_large_sets.empty() ? 0 : sites.size(), false);  // the large set being listed
   std::vector<Site_index> unplaced_in_set;
   std::vector<Triple> triangulated;

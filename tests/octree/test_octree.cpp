@@ -14,6 +14,7 @@
 #include "reference/brute_force_diagram.h"
 #include "support/diagram_checks.h"
 #include "io/read_sites.h"
+#include "octree/lifted_triangulation.h"
 #include "octree/octree_diagram.h"
 #include "predicates/predicate_counter.h"
 #include "reference/site_generators.h"
@@ -263,6 +264,10 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     CHECK(regions.escaping.size() == sites.size() - octree.hidden.size());
     REQUIRE(regions.far_sets.size() == 1);
     CHECK(regions.far_sets[0] == regions.escaping);
+    // The vertex-free search takes the fallback's triangulation of that far set instead of building it again.
+    REQUIRE(regions.lifts != nullptr);
+    CHECK(regions.lifts->sites == regions.far_sets[0]);
+    CHECK(regions.lifts->quadruples.size() == with_regions_statistics.lifted_quadruples);
 
     Octree_regions unlimited_regions;
     Octree_options unlimited_with_regions{threads};
@@ -271,6 +276,7 @@ TEST_CASE("the octree turns to the lifted triangulation once its box budget is s
     check_same(octree_diagram(sites, unlimited_with_regions), octree);
     CHECK(unlimited_regions.has_octree);
     CHECK_FALSE(unlimited_regions.lifted_fallback);
+    CHECK(unlimited_regions.lifts == nullptr);
     CHECK_FALSE(unlimited_regions.boxes.empty());
   }
 }
