@@ -4,13 +4,19 @@
 // no edge, which is then the whole sheet. Predicates on it, filtered in intervals, exact with
 // CGAL::Sqrt_extension:
 //  - axis_point_conflict(a, b, s): the sign of d_s - r there (as vertex_conflict);
-//  - axis_point_in_box(a, b, box): whether it lies in the closed box.
+//  - axis_point_in_box(a, b, box): whether it lies in the closed box;
+//  - enclose_axis_point(a, b): its coordinates' enclosure in doubles.
 #pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
 
 #include <CGAL/Sqrt_extension.h>
 
 #include "predicates/axis_box.h"
 #include "predicates/filtered_predicate.h"
+#include "predicates/rounding_guard.h"
 #include "predicates/site.h"
 
 namespace apollonius {
@@ -74,5 +80,24 @@ struct Axis_point_in_box_predicate : Axis_point_predicates {
 
 inline const Filtered_predicate<Axis_point_conflict_predicate> axis_point_conflict{};
 inline const Filtered_predicate<Axis_point_in_box_predicate> axis_point_in_box{};
+
+// An enclosure of the point's x, y, z, rounded outwards: the centres' bounding box (the point lies on the
+// segment between them), narrowed to its intervals where those are finite. The box alone let every ball
+// tangent to one circle reach the sheet point of two balls far apart (topology/reaching_sites.h).
+inline std::array<Interval, 3> enclose_axis_point(const Site& a, const Site& b) {
+  Rounding_guard guard;
+  const std::array<Interval, 4> point = Axis_point_predicates::point<Interval>(a, b);
+  std::array<Interval, 3> box;
+  for (int k = 0; k < 3; ++k) {
+    double lo = std::min(centre_coordinate(a, k), centre_coordinate(b, k));
+    double hi = std::max(centre_coordinate(a, k), centre_coordinate(b, k));
+    if (std::isfinite(point[k].inf()) && std::isfinite(point[k].sup())) {  // both hold the point
+      lo = std::max(lo, point[k].inf());
+      hi = std::min(hi, point[k].sup());
+    }
+    box[k] = Interval(lo, hi);
+  }
+  return box;
+}
 
 }  // namespace apollonius

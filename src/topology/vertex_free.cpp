@@ -549,14 +549,8 @@ Vertex_free_parts vertex_free_parts(const std::vector<Site>& sites, const Vertex
       if (axis_point_in_box(a, b, regions.boxes[box].box)) test = range_of(regions.boxes[box].sites);
       return test.has_value();
     });
-    if (!test && !regions.has_octree && seen.far) {  // no octree: all escape
-      // The sheet's point lies on the segment between the centres, in their bounding box.
-      std::array<Interval, 3> box;
-      for (int k = 0; k < 3; ++k)
-        box[k] = Interval(std::min(centre_coordinate(a, k), centre_coordinate(b, k)),
-                          std::max(centre_coordinate(a, k), centre_coordinate(b, k)));
-      test = witness_sites(regions, reaching, box, a);
-    }
+    if (!test && !regions.has_octree && seen.far)  // no octree: all escape
+      test = witness_sites(regions, reaching, enclose_axis_point(a, b), a);
     if (!test) continue;
     const std::optional<std::vector<Site_index>> tie = tie_at({pair.first, pair.second}, *test, [&](Site_index s) {
       return axis_point_conflict(a, b, sites[s]);
