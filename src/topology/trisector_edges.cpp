@@ -97,19 +97,25 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
   group_start.push_back(entries.size());
 
-  // The gradients of the large tie sets, for their first-order sides (vertex_fan.h), by vertex.
+  // The gradients and distances of the large tie sets, for their first- and second-order sides
+  // (vertex_fan.h), by vertex.
+  struct Large_tie {
+    std::size_t vertex;
+    Tie_gradients gradients;
+    std::vector<Interval> distances;
+  };
   const std::size_t small_up_to = triples.every_triple_up_to();
-  std::vector<std::pair<std::size_t, Tie_gradients>> large;
+  std::vector<Large_tie> large;
   for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
     if (diagram.vertices[v].tie_set.size() <= small_up_to) continue;
-    Tie_gradients n;
-    if (tie_gradients(sites, diagram.vertices[v], n)) large.emplace_back(v, std::move(n));
+    Large_tie tie{v, {}, {}};
+    if (tie_gradients(sites, diagram.vertices[v], tie.gradients, &tie.distances)) large.push_back(std::move(tie));
   }
-  const auto gradients_of = [&](std::size_t v) -> const Tie_gradients* {
+  const auto large_tie_of = [&](std::size_t v) -> const Large_tie* {
     if (diagram.vertices[v].tie_set.size() <= small_up_to) return nullptr;
-    const auto before = [](const auto& x, std::size_t w) { return x.first < w; };
+    const auto before = [](const Large_tie& x, std::size_t w) { return x.vertex < w; };
     const auto at = std::lower_bound(large.begin(), large.end(), v, before);
-    return at != large.end() && at->first == v ? &at->second : nullptr;
+    return at != large.end() && at->vertex == v ? &*at : nullptr;
   };
 
   // Groups in chunks of consecutive curves, each chunk's edges in its own list: the output is the same
@@ -140,7 +146,9 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
           std::array<std::size_t, 3> positions{};  // of the triple's sites in the vertex's tie set
           for (int m = 0; m < 3; ++m)
             positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
-          departures_along(sites, v, trisector, positions, departures, gradients_of(entries[i].vertex));
+          const Large_tie* tie = large_tie_of(entries[i].vertex);
+          departures_along(sites, v, trisector, positions, departures, tie != nullptr ? &tie->gradients : nullptr,
+                           tie != nullptr ? &tie->distances : nullptr);
           vertex_of.resize(departures.size(), entries[i].vertex);
         }
         if (departures.empty()) continue;

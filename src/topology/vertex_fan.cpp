@@ -13,24 +13,61 @@ namespace {
 
 const std::optional<Sign> kUncertain;
 
-// Per site of the tie set, the sign of t.(n_s - n_i) where certain and not zero (the first order of d_s - r
-// along t), else nothing. Returns false when two sites have opposite certain signs.
-bool first_order_sides(const Tie_gradients& n, const std::array<std::size_t, 3>& positions,
-                       std::vector<std::optional<Sign>>& sides) {
+using Direction = std::array<Interval, 3>;  // as Tie_gradients' entries
+
+Direction minus(const Direction& a, const Direction& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+// The signs that v's enclosures tell, per site of the tie set, without a predicate:
+//  - first[m]: the sign of t.(n_m - n_i) where certain and not zero (the first order of d_m - r along t);
+//  - second[m]: where that first order is certainly 0 (n_m on the circle of the triple's n_i, n_j, n_l) and
+//    distances are given, the sign of d_m - r on both sides of v, where certain. It is second order's
+//    (1 - c^2) (1 / D_m - sum_k alpha_k / D_k) / 2, with n_m = sum_k alpha_k n_k the affine combination of the
+//    triple's
+//    (departure_star.cpp, settle_first_order_tie, with c = nu.n_k < 1 in absolute value): the sign of
+//    h = (L_m - L_i) det(b, c) - det(m, c) (L_j - L_i) - det(b, m) (L_l - L_i) times that of det(b, c), for
+//    the n_k - n_i projected along an axis where t is certainly not 0 (bijective on the circle's plane)
+//    and L_k = 1 / D_k. Zero or uncertain: the predicate decides (third order, or a tie along the curve).
+// Returns false when two sites have opposite certain first-order signs.
+bool enclosed_sides(const Tie_gradients& n, const std::vector<Interval>* distances,
+                    const std::array<std::size_t, 3>& positions, std::vector<std::optional<Sign>>& first,
+                    std::vector<std::optional<Sign>>& second) {
   Rounding_guard guard;
-  const auto minus = [](const std::array<Interval, 3>& a, const std::array<Interval, 3>& b) {
-    return std::array<Interval, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  };
-  const std::array<Interval, 3>& base = n[positions[0]];
-  const std::array<Interval, 3> u = minus(n[positions[1]], base), w = minus(n[positions[2]], base);
-  const std::array<Interval, 3> t = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const Direction& base = n[positions[0]];
+  const Direction u = minus(n[positions[1]], base), w = minus(n[positions[2]], base);
+  const Direction t = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
   bool positive = false, negative = false;
-  sides.assign(n.size(), std::nullopt);
+  first.assign(n.size(), std::nullopt);
+  second.assign(n.size(), std::nullopt);
+  // The projection's axis: the component of t farthest from 0 for certain, if any.
+  int axis = -1;
+  double clearance = 0;
+  for (int a = 0; a < 3 && distances != nullptr; ++a) {
+    const double apart = t[a].inf() > 0 ? t[a].inf() : t[a].sup() < 0 ? -t[a].sup() : 0;
+    if (apart > clearance) axis = a, clearance = apart;
+  }
+  const int p = (axis + 1) % 3, q = (axis + 2) % 3;
+  const auto det = [&](const Direction& x, const Direction& y) { return x[p] * y[q] - x[q] * y[p]; };
+  const auto lift = [&](std::size_t m) { return Interval(1) / (*distances)[m]; };
+  Interval base_lift(0), u_lift(0), w_lift(0), area(0);
+  Sign area_sign = Sign::ZERO;
+  if (axis >= 0) {
+    base_lift = lift(positions[0]);
+    u_lift = lift(positions[1]) - base_lift;
+    w_lift = lift(positions[2]) - base_lift;
+    area = det(u, w);
+    if (area.inf() > 0) area_sign = Sign::POSITIVE;
+    if (area.sup() < 0) area_sign = Sign::NEGATIVE;
+  }
   for (std::size_t m = 0; m < n.size(); ++m) {
-    const std::array<Interval, 3> d = minus(n[m], base);
+    const Direction d = minus(n[m], base);
     const Interval value = t[0] * d[0] + t[1] * d[1] + t[2] * d[2];
-    if (value.inf() > 0) sides[m] = Sign::POSITIVE, positive = true;
-    if (value.sup() < 0) sides[m] = Sign::NEGATIVE, negative = true;
+    if (value.inf() > 0) first[m] = Sign::POSITIVE, positive = true;
+    if (value.sup() < 0) first[m] = Sign::NEGATIVE, negative = true;
+    if (value.inf() == 0 && value.sup() == 0 && area_sign != Sign::ZERO) {  // certainly 0
+      const Interval h = (lift(m) - base_lift) * area - det(d, w) * u_lift - det(u, d) * w_lift;
+      if (h.inf() > 0) second[m] = area_sign;
+      if (h.sup() < 0) second[m] = -area_sign;
+    }
   }
   return !(positive && negative);
 }
@@ -39,12 +76,13 @@ bool first_order_sides(const Tie_gradients& n, const std::array<std::size_t, 3>&
 
 void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, const Trisector& trisector,
                       const std::array<std::size_t, 3>& positions, std::vector<Departure>& out,
-                      const Tie_gradients* gradients) {
+                      const Tie_gradients* gradients, const std::vector<Interval>* distances) {
   const std::vector<Site_index>& tie = v.tie_set;
   const std::size_t k = tie.size();
   const std::array<Site_index, 3>& triple = trisector.indices();
-  std::vector<std::optional<Sign>> first_order;  // empty without gradients
-  if (gradients != nullptr && !first_order_sides(*gradients, positions, first_order)) return;  // both sides lose
+  std::vector<std::optional<Sign>> first_order, second_order;  // empty without gradients
+  if (gradients != nullptr && !enclosed_sides(*gradients, distances, positions, first_order, second_order))
+    return;  // both sides lose
   std::optional<Sign> forward_along_t;  // POSITIVE: forward is along t
   bool forward = true, backward = true;
   std::vector<Site_index> along;  // the other sites that tie along the whole curve
@@ -52,7 +90,9 @@ void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, c
     if (m == positions[0] || m == positions[1] || m == positions[2]) continue;
     const std::optional<Sign>& side = first_order.empty() ? kUncertain : first_order[m];
     std::pair<Sign, Sign> sides;
-    if (side.has_value() && forward_along_t.has_value()) {
+    if (!second_order.empty() && second_order[m].has_value()) {
+      sides = {*second_order[m], *second_order[m]};
+    } else if (side.has_value() && forward_along_t.has_value()) {
       const Sign first = *forward_along_t * *side;
       sides = {first, -first};
     } else {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "octree/octree_diagram.h"
+#include "predicates/predicate_counter.h"
 #include "predicates/trisector.h"
 #include "reference/site_generators.h"
 #include "support/time_limit.h"
@@ -176,4 +177,64 @@ TEST_CASE("regression: diagram_triples_blowup_sphere_tangent_1000_2") {
   CHECK(topology.edges.size() == 4621);
   CHECK(topology.faces.size() == 3978);
   CHECK(topology.cells.size() == 1000);
+}
+
+// departures_along with v's enclosures (gradients and distances) against departures_along with neither, on
+// every triple the star offers at the vertex where 120 balls tangent to one circle tie. Their n_k lie on one
+// circle, so every first order is 0: the distances' second order decides most sites without a predicate.
+TEST_CASE("the enclosures' second order at a vertex of balls tangent to one circle agrees with the predicate") {
+  const std::vector<Site> sites = generate_sites(Site_family::circle_tangent, 120, 2);
+  Input_time_limit limit(seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60), "circle-tangent 120 seed 2");
+  const Diagram diagram = octree_diagram(sites, Octree_options{});
+  const auto fewer_sites = [](const Diagram_vertex& a, const Diagram_vertex& b) {
+    return a.tie_set.size() < b.tie_set.size();
+  };
+  const Diagram_vertex& v = *std::max_element(diagram.vertices.begin(), diagram.vertices.end(), fewer_sites);
+  const std::size_t k = v.tie_set.size();
+  REQUIRE(k >= 100);
+  Tie_gradients gradients;
+  std::vector<Interval> distances;
+  REQUIRE(tie_gradients(sites, v, gradients, &distances));
+  std::vector<std::array<Site_index, 3>> offered;
+  REQUIRE(candidate_departure_triples(sites, v, offered));
+  const auto same_departures = [](const std::vector<Departure>& x, const std::vector<Departure>& y) {
+    if (x.size() != y.size()) return false;
+    for (std::size_t d = 0; d < x.size(); ++d)
+      if (x[d].triple != y[d].triple || x[d].tie_set != y[d].tie_set || x[d].direction != y[d].direction) return false;
+    return true;
+  };
+  const auto sides_predicates = [] {
+    for (const Predicate_statistics& p : predicate_statistics())
+      if (p.name == "sides_near_vertex") return p.evaluations;
+    return std::uint64_t{0};
+  };
+  std::uint64_t with_enclosures = 0, without = 0;
+  std::size_t departing = 0;
+  std::vector<Departure> enclosed, plain;
+  for (const std::array<Site_index, 3>& triple : offered) {
+    std::array<std::size_t, 3> positions{};
+    for (int m = 0; m < 3; ++m)
+      positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
+    const Trisector trisector(triple, {sites[triple[0]], sites[triple[1]], sites[triple[2]]});
+    enclosed.clear();
+    plain.clear();
+    std::uint64_t before = sides_predicates();
+    departures_along(sites, v, trisector, positions, enclosed, &gradients, &distances);
+    with_enclosures += sides_predicates() - before;
+    before = sides_predicates();
+    departures_along(sites, v, trisector, positions, plain);
+    without += sides_predicates() - before;
+    CAPTURE(triple[0]);
+    CAPTURE(triple[1]);
+    CAPTURE(triple[2]);
+    CHECK(same_departures(enclosed, plain));
+    departing += !plain.empty();
+  }
+  MESSAGE(k << " tied sites, " << offered.size() << " triples, " << departing << " departing; sides_near_vertex "
+            << with_enclosures << " times with the enclosures, " << without << " without");
+  CHECK(departing >= k / 2);
+  // Without them each departing triple asks about all k - 3 other sites; with them only where the second
+  // order is uncertain or 0.
+  CHECK(without >= departing * (k - 3));
+  CHECK(with_enclosures * 10 < without);
 }
