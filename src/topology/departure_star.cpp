@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <set>
 
 #include "predicates/number_types.h"
 #include "predicates/rounding_guard.h"
@@ -35,6 +36,9 @@ struct Patch {
   int stagnant;  // levels since a site was last removed
 };
 
+// smallest_curve_unless's test for sites tied to first order along a curve: apart unless its first order is 0.
+bool apart_to_first_order(Sign after, Sign before) { return after != Sign::ZERO && before == -after; }
+
 // The star of one vertex: refines patches of directions y for points P_k (the gradients n_k, then, within
 // a cocircular set, the second-order lifts), keeping the sites that minimise y.P_k somewhere in the patch.
 class Departure_star {
@@ -46,6 +50,13 @@ class Departure_star {
   bool run() {
     std::vector<std::size_t> all(v_.tie_set.size());
     std::iota(all.begin(), all.end(), std::size_t{0});
+    // Every n_k on one circle (balls tangent to one circle): three of them tie to first order only along its
+    // axis, where all do, so the first star would find just that, refining toward the axis through
+    // O(k^2 log) patches whose few survivors tie nowhere else (docs/benchmarks.md). Settled at once. Tied
+    // sites have distinct n_k: two on one ray from v would be nested tangent balls, one of them hidden.
+    if (all.size() > 3)
+      if (const std::optional<std::array<std::size_t, 3>> smallest = smallest_curve_unless(all, apart_to_first_order))
+        return settle_cocircular(all, *smallest);
     for (int face = 0; face < 6; ++face)
       if (!refine(gradients_, Order::first, {face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, all))
         return false;
@@ -114,16 +125,24 @@ class Departure_star {
   // (n_k, 1 / D_k). So T is a lower facet of the lifts, which a second star over them finds, the lifts
   // projected to the plane along an axis where nu is certainly not 0 (an affine bijection of the circle's
   // plane keeps the lower facets). Otherwise every triple of the survivors.
+  // A survivor set is settled once: patches that meet at the circle's axis (a corner of theirs where the
+  // axis is a coordinate axis, as for balls tangent to a circle in a coordinate plane) keep the same sites,
+  // and the second star depends on them alone.
   bool settle_first_order_tie(const std::vector<std::size_t>& survivors) {
-    const auto apart_to_first_order = [](Sign after, Sign before) { return after != Sign::ZERO && before == -after; };
+    if (!settled_.insert(survivors).second) return true;
     const std::optional<std::array<std::size_t, 3>> smallest = smallest_curve_unless(survivors, apart_to_first_order);
     if (!smallest) return record(survivors);
+    return settle_cocircular(survivors, *smallest);
+  }
+
+  // The second star, for survivors whose n_k lie on the circle of their smallest triple's.
+  bool settle_cocircular(const std::vector<std::size_t>& survivors, const std::array<std::size_t, 3>& smallest) {
     Tie_gradients lifts(gradients_.size());
     {
       Rounding_guard guard;
-      const Direction& a = gradients_[(*smallest)[0]];
-      const Direction& b = gradients_[(*smallest)[1]];
-      const Direction& c = gradients_[(*smallest)[2]];
+      const Direction& a = gradients_[smallest[0]];
+      const Direction& b = gradients_[smallest[1]];
+      const Direction& c = gradients_[smallest[2]];
       const Direction u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
       const Direction axis_normal = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
       int axis = -1;
@@ -200,6 +219,7 @@ class Departure_star {
   std::vector<Interval> distances_;  // per site of the tie set: encloses D_k = |v - p_k|
   std::vector<std::array<Site_index, 3>>& triples_;
   std::size_t patches_ = 0;
+  std::set<std::vector<std::size_t>> settled_;  // survivor sets settled to first order (ascending, as all kept)
 };
 
 }  // namespace

@@ -12,9 +12,9 @@
 // survivors that are exactly cocircular (sides_near_vertex) are separated by second order, in a star over
 // their lifts (n_k, 1 / |v - p_k|), and those that tie to second order too and along a whole curve give that
 // curve's smallest triple; any other survivors give every triple of theirs (the derivations are at
-// settle_first_order_tie and settle_second_order_tie). So each edge's smallest triple (from which
-// departures_along counts it) is recorded: a superset of the departures, which departures_along then
-// decides exactly. In general position the n_k's convex hull has about 2k facets, one per edge; on k balls
+// settle_first_order_tie and settle_second_order_tie). A tie set whose n_k all lie on one circle goes to the
+// second star at once. So each edge's smallest triple (from which departures_along counts it) is recorded:
+// a superset of the departures, which departures_along then decides exactly. In general position the n_k's convex hull has about 2k facets, one per edge; on k balls
 // tangent to one circle, all tied at its centre, the lifts' lower facets number about k.
 //
 // Termination: depth at most kMaxDepth, at most kPatchesPerSite patches and kTriplesPerSite recorded
