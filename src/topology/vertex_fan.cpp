@@ -21,10 +21,9 @@ Direction minus(const Direction& a, const Direction& b) { return {a[0] - b[0], a
 //  - first[m]: the sign of t.(n_m - n_i) where certain and not zero (the first order of d_m - r along t);
 //  - second[m]: where that first order is certainly 0 (n_m on the circle of the triple's n_i, n_j, n_l) and
 //    distances are given, the sign of d_m - r on both sides of v, where certain. It is second order's
-//    (1 - c^2) (1 / D_m - sum_k alpha_k / D_k) / 2, with n_m = sum_k alpha_k n_k the affine combination of the
-//    triple's
-//    (departure_star.cpp, settle_first_order_tie, with c = nu.n_k < 1 in absolute value): the sign of
-//    h = (L_m - L_i) det(b, c) - det(m, c) (L_j - L_i) - det(b, m) (L_l - L_i) times that of det(b, c), for
+//    (1 - c^2) (1 / D_m - sum_k alpha_k / D_k) / 2, with n_m = sum_k alpha_k n_k the affine combination of
+//    the triple's (departure_star.cpp, settle_first_order_tie; c = nu.n_k, |c| < 1): the sign of
+//    h = (L_m - L_i) det(j, l) - det(m, l) (L_j - L_i) - det(j, m) (L_l - L_i) times that of det(j, l), for
 //    the n_k - n_i projected along an axis where t is certainly not 0 (bijective on the circle's plane)
 //    and L_k = 1 / D_k. Zero or uncertain: the predicate decides (third order, or a tie along the curve).
 // Returns false when two sites have opposite certain first-order signs.
