@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -126,7 +127,12 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
     }
     return list;
   });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size()), [&](const tbb::blocked_range<std::size_t>& range) {
+  // At most 4 ranges per thread: a vertex of many tied sites has its tie set found once in each range that
+  // meets it (below), at O(k) conflict tests. TBB's own split made about 64 ranges with one thread, where
+  // the two tie points of two-spheres 4,000 took 511,488 exact tests instead of 7,992 (docs/benchmarks.md).
+  const std::size_t grain = std::max<std::size_t>(
+      1, quadruples.size() / (4 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency())));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size(), grain), [&](const tbb::blocked_range<std::size_t>& range) {
     std::vector<Found_vertex>& list = found.local();
     Tested_sites tested(sites.size());
     std::vector<Site_index> tie;

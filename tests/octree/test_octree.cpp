@@ -472,6 +472,28 @@ TEST_CASE("sites of one weight all on one sphere: one vertex holds them all") {
   }
 }
 
+// Fixed: the lifted triangulation's quadruples went to TBB's own split, about 64 ranges with one thread, and
+// each range that meets a vertex of k tied sites finds its tie set again at O(k) conflict tests: the two
+// tie points of these 1,000 balls took 127,488 exact conflict tests. Now at most 8 ranges per thread.
+TEST_CASE("regression: lifted_tie_sets_once_per_range_two_spheres_1000_2") {
+  const std::vector<Site> sites = generate_sites(Site_family::two_spheres, 1000, 2);
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    Input_time_limit limit(time_limit(), "two-spheres 1000 seed 2");
+    Octree_options options{threads};
+    options.box_budget = 0;  // --algorithm lifted
+    reset_predicate_statistics();
+    const Diagram diagram = octree_diagram(sites, options);
+    std::uint64_t tests = 0;
+    for (const Predicate_statistics& p : predicate_statistics())
+      if (p.name == "vertex_conflict") tests = p.evaluations;
+    REQUIRE(diagram.vertices.size() == 2);
+    CHECK(diagram.vertices[0].tie_set.size() == 1000);
+    CHECK(diagram.vertices[1].tie_set.size() == 1000);
+    CHECK(tests <= static_cast<std::uint64_t>(2 * 1000 * 8 * threads));
+  }
+}
+
 // Sites from 1e-260 to 4e265 (a cluster 4e-9 wide beside balls of radius 1 and out to 4e265): the conflict
 // and hidden tests overflow plain intervals or cancel to the cluster's width relative to a far origin; the
 // wide stages, taken from the vertex's site nearest the tested one, decide them (vertex_conflict.h).
