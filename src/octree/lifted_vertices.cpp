@@ -127,9 +127,10 @@ std::vector<Found_vertex> lifted_vertices(const std::vector<Site>& sites, const 
     }
     return list;
   });
-  // At most 4 ranges per thread: a vertex of many tied sites has its tie set found once in each range that
-  // meets it (below), at O(k) conflict tests. TBB's own split made about 64 ranges with one thread, where
-  // the two tie points of two-spheres 4,000 took 511,488 exact tests instead of 7,992 (docs/benchmarks.md).
+  // At most 8 ranges per thread (a range splits while longer than the grain): a vertex of many tied sites
+  // has its tie set found once in each range that meets it (below), at O(k) conflict tests. TBB's own split
+  // made about 64 ranges with one thread: two-spheres 4,000 took 511,488 exact tests, now 47,952
+  // (docs/benchmarks.md).
   const std::size_t grain = std::max<std::size_t>(
       1, quadruples.size() / (4 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency())));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, quadruples.size(), grain), [&](const tbb::blocked_range<std::size_t>& range) {

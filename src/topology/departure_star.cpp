@@ -44,8 +44,12 @@ bool apart_to_first_order(Sign after, Sign before) { return after != Sign::ZERO 
 class Departure_star {
  public:
   Departure_star(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients gradients,
-                 std::vector<Interval> distances, std::vector<std::array<Site_index, 3>>& triples)
-      : sites_(sites), v_(v), gradients_(std::move(gradients)), distances_(std::move(distances)), triples_(triples) {}
+                 std::vector<Interval> inverse_distances, std::vector<std::array<Site_index, 3>>& triples)
+      : sites_(sites),
+        v_(v),
+        gradients_(std::move(gradients)),
+        inverse_distances_(std::move(inverse_distances)),
+        triples_(triples) {}
 
   bool run() {
     std::vector<std::size_t> all(v_.tie_set.size());
@@ -154,7 +158,7 @@ class Departure_star {
       }
       if (axis < 0) return record(survivors);
       for (std::size_t k : survivors)
-        lifts[k] = {gradients_[k][(axis + 1) % 3], gradients_[k][(axis + 2) % 3], Interval(1) / distances_[k]};
+        lifts[k] = {gradients_[k][(axis + 1) % 3], gradients_[k][(axis + 2) % 3], inverse_distances_[k]};
     }
     for (int face = 0; face < 6; ++face)
       if (!refine(lifts, Order::second, {face / 2, face % 2 ? 1.0 : -1.0, -1, 1, -1, 1, 0, 0}, survivors))
@@ -216,7 +220,7 @@ class Departure_star {
   const std::vector<Site>& sites_;
   const Diagram_vertex& v_;
   Tie_gradients gradients_;
-  std::vector<Interval> distances_;  // per site of the tie set: encloses D_k = |v - p_k|
+  std::vector<Interval> inverse_distances_;  // per site of the tie set: encloses 1 / D_k = 1 / |v - p_k|
   std::vector<std::array<Site_index, 3>>& triples_;
   std::size_t patches_ = 0;
   std::set<std::vector<std::size_t>> settled_;  // survivor sets settled to first order (ascending, as all kept)
@@ -225,10 +229,10 @@ class Departure_star {
 }  // namespace
 
 bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients& gradients,
-                   std::vector<Interval>* distances) {
+                   std::vector<Interval>* inverse_distances) {
   const std::size_t k = v.tie_set.size();
   gradients.resize(k);
-  if (distances != nullptr) distances->resize(k);
+  if (inverse_distances != nullptr) inverse_distances->resize(k);
   Rounding_guard guard;
   const std::array<Interval, 4> p = v.vertex.point_interval();
   for (std::size_t c = 0; c < k; ++c) {
@@ -237,7 +241,7 @@ bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_
     const Interval distance = CGAL::sqrt(dot(offset, offset));
     if (!(distance.inf() > 0) || !std::isfinite(distance.sup())) return false;  // v may be a centre
     for (int a = 0; a < 3; ++a) gradients[c][a] = offset[a] / distance;
-    if (distances != nullptr) (*distances)[c] = distance;
+    if (inverse_distances != nullptr) (*inverse_distances)[c] = Interval(1) / distance;
   }
   return true;
 }
@@ -246,9 +250,9 @@ bool candidate_departure_triples(const std::vector<Site>& sites, const Diagram_v
                                  std::vector<std::array<Site_index, 3>>& triples) {
   triples.clear();
   Tie_gradients gradients;
-  std::vector<Interval> distances;
-  if (!tie_gradients(sites, v, gradients, &distances)) return false;
-  Departure_star star(sites, v, std::move(gradients), std::move(distances), triples);
+  std::vector<Interval> inverse_distances;
+  if (!tie_gradients(sites, v, gradients, &inverse_distances)) return false;
+  Departure_star star(sites, v, std::move(gradients), std::move(inverse_distances), triples);
   if (!star.run()) return false;
   std::sort(triples.begin(), triples.end());
   triples.erase(std::unique(triples.begin(), triples.end()), triples.end());

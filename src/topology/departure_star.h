@@ -14,8 +14,9 @@
 // curve's smallest triple; any other survivors give every triple of theirs (the derivations are at
 // settle_first_order_tie and settle_second_order_tie). A tie set whose n_k all lie on one circle goes to the
 // second star at once. So each edge's smallest triple (from which departures_along counts it) is recorded:
-// a superset of the departures, which departures_along then decides exactly. In general position the n_k's convex hull has about 2k facets, one per edge; on k balls
-// tangent to one circle, all tied at its centre, the lifts' lower facets number about k.
+// a superset of the departures, which departures_along then decides exactly. In general position the n_k's
+// convex hull has about 2k facets, one per edge; on k balls tangent to one circle, all tied at its centre,
+// the lifts' lower facets number about k.
 //
 // Termination: depth at most kMaxDepth, at most kPatchesPerSite patches and kTriplesPerSite recorded
 // triples per site, past which it gives up and the caller lists every triple (exact, as for small sets).
@@ -33,10 +34,10 @@ namespace apollonius {
 // (and intervals used) only inside a Rounding_guard.
 using Tie_gradients = std::vector<std::array<Interval, 3>>;
 
-// Fills `gradients` (and, if given, `distances`, enclosures of |v - p_k|) for v and returns true; false
-// when some enclosure is not finite or v may be a centre.
+// Fills `gradients` (and, if given, `inverse_distances`, enclosures of 1 / |v - p_k|: the second order's
+// lifts) for v and returns true; false when some enclosure is not finite or v may be a centre.
 bool tie_gradients(const std::vector<Site>& sites, const Diagram_vertex& v, Tie_gradients& gradients,
-                   std::vector<Interval>* distances = nullptr);
+                   std::vector<Interval>* inverse_distances = nullptr);
 
 // Replaces `triples` with triples of v.tie_set (ascending, sorted, each once) that include every triple
 // along which an edge leaves v, and returns true; or returns false when it gives up.

@@ -97,19 +97,19 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
     if (i == 0 || entries[i].triple != entries[i - 1].triple) group_start.push_back(i);
   group_start.push_back(entries.size());
 
-  // The gradients and distances of the large tie sets, for their first- and second-order sides
+  // The gradients and lifts (1 / |v - p_k|) of the large tie sets, for their first- and second-order sides
   // (vertex_fan.h), by vertex.
   struct Large_tie {
     std::size_t vertex;
     Tie_gradients gradients;
-    std::vector<Interval> distances;
+    std::vector<Interval> lifts;
   };
   const std::size_t small_up_to = triples.every_triple_up_to();
   std::vector<Large_tie> large;
   for (std::size_t v = 0; v < diagram.vertices.size(); ++v) {
     if (diagram.vertices[v].tie_set.size() <= small_up_to) continue;
     Large_tie tie{v, {}, {}};
-    if (tie_gradients(sites, diagram.vertices[v], tie.gradients, &tie.distances)) large.push_back(std::move(tie));
+    if (tie_gradients(sites, diagram.vertices[v], tie.gradients, &tie.lifts)) large.push_back(std::move(tie));
   }
   const auto large_tie_of = [&](std::size_t v) -> const Large_tie* {
     if (diagram.vertices[v].tie_set.size() <= small_up_to) return nullptr;
@@ -148,7 +148,7 @@ std::vector<Diagram_edge> edges_through_vertices(const std::vector<Site>& sites,
             positions[m] = static_cast<std::size_t>(std::lower_bound(v.tie_set.begin(), v.tie_set.end(), triple[m]) - v.tie_set.begin());
           const Large_tie* tie = large_tie_of(entries[i].vertex);
           departures_along(sites, v, trisector, positions, departures, tie != nullptr ? &tie->gradients : nullptr,
-                           tie != nullptr ? &tie->distances : nullptr);
+                           tie != nullptr ? &tie->lifts : nullptr);
           vertex_of.resize(departures.size(), entries[i].vertex);
         }
         if (departures.empty()) continue;

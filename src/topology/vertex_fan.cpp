@@ -20,14 +20,14 @@ Direction minus(const Direction& a, const Direction& b) { return {a[0] - b[0], a
 // The signs that v's enclosures tell, per site of the tie set, without a predicate:
 //  - first[m]: the sign of t.(n_m - n_i) where certain and not zero (the first order of d_m - r along t);
 //  - second[m]: where that first order is certainly 0 (n_m on the circle of the triple's n_i, n_j, n_l) and
-//    distances are given, the sign of d_m - r on both sides of v, where certain. It is second order's
-//    (1 - c^2) (1 / D_m - sum_k alpha_k / D_k) / 2, with n_m = sum_k alpha_k n_k the affine combination of
-//    the triple's (departure_star.cpp, settle_first_order_tie; c = nu.n_k, |c| < 1): the sign of
-//    h = (L_m - L_i) det(j, l) - det(m, l) (L_j - L_i) - det(j, m) (L_l - L_i) times that of det(j, l), for
-//    the n_k - n_i projected along an axis where t is certainly not 0 (bijective on the circle's plane)
-//    and L_k = 1 / D_k. Zero or uncertain: the predicate decides (third order, or a tie along the curve).
+//    the lifts L_k = 1 / D_k are given (tie_gradients), the sign of d_m - r on both sides of v, where
+//    certain. It is second order's (1 - c^2) (L_m - sum_k alpha_k L_k) / 2, with n_m = sum_k alpha_k n_k the
+//    affine combination of the triple's (departure_star.cpp, settle_first_order_tie; c = nu.n_k, |c| < 1):
+//    the sign of h = (L_m - L_i) det(j, l) - det(m, l) (L_j - L_i) - det(j, m) (L_l - L_i) times that of
+//    det(j, l), for the n_k - n_i projected along an axis where t is certainly not 0 (bijective on the
+//    circle's plane). Zero or uncertain: the predicate decides (third order, or a tie along the curve).
 // Returns false when two sites have opposite certain first-order signs.
-bool enclosed_sides(const Tie_gradients& n, const std::vector<Interval>* distances,
+bool enclosed_sides(const Tie_gradients& n, const std::vector<Interval>* lifts,
                     const std::array<std::size_t, 3>& positions, std::vector<std::optional<Sign>>& first,
                     std::vector<std::optional<Sign>>& second) {
   Rounding_guard guard;
@@ -40,19 +40,18 @@ bool enclosed_sides(const Tie_gradients& n, const std::vector<Interval>* distanc
   // The projection's axis: the component of t farthest from 0 for certain, if any.
   int axis = -1;
   double clearance = 0;
-  for (int a = 0; a < 3 && distances != nullptr; ++a) {
+  for (int a = 0; a < 3 && lifts != nullptr; ++a) {
     const double apart = t[a].inf() > 0 ? t[a].inf() : t[a].sup() < 0 ? -t[a].sup() : 0;
     if (apart > clearance) axis = a, clearance = apart;
   }
   const int p = (axis + 1) % 3, q = (axis + 2) % 3;
   const auto det = [&](const Direction& x, const Direction& y) { return x[p] * y[q] - x[q] * y[p]; };
-  const auto lift = [&](std::size_t m) { return Interval(1) / (*distances)[m]; };
   Interval base_lift(0), u_lift(0), w_lift(0), area(0);
   Sign area_sign = Sign::ZERO;
   if (axis >= 0) {
-    base_lift = lift(positions[0]);
-    u_lift = lift(positions[1]) - base_lift;
-    w_lift = lift(positions[2]) - base_lift;
+    base_lift = (*lifts)[positions[0]];
+    u_lift = (*lifts)[positions[1]] - base_lift;
+    w_lift = (*lifts)[positions[2]] - base_lift;
     area = det(u, w);
     if (area.inf() > 0) area_sign = Sign::POSITIVE;
     if (area.sup() < 0) area_sign = Sign::NEGATIVE;
@@ -63,7 +62,7 @@ bool enclosed_sides(const Tie_gradients& n, const std::vector<Interval>* distanc
     if (value.inf() > 0) first[m] = Sign::POSITIVE, positive = true;
     if (value.sup() < 0) first[m] = Sign::NEGATIVE, negative = true;
     if (value.inf() == 0 && value.sup() == 0 && area_sign != Sign::ZERO) {  // certainly 0
-      const Interval h = (lift(m) - base_lift) * area - det(d, w) * u_lift - det(u, d) * w_lift;
+      const Interval h = ((*lifts)[m] - base_lift) * area - det(d, w) * u_lift - det(u, d) * w_lift;
       if (h.inf() > 0) second[m] = area_sign;
       if (h.sup() < 0) second[m] = -area_sign;
     }
@@ -75,12 +74,12 @@ bool enclosed_sides(const Tie_gradients& n, const std::vector<Interval>* distanc
 
 void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, const Trisector& trisector,
                       const std::array<std::size_t, 3>& positions, std::vector<Departure>& out,
-                      const Tie_gradients* gradients, const std::vector<Interval>* distances) {
+                      const Tie_gradients* gradients, const std::vector<Interval>* lifts) {
   const std::vector<Site_index>& tie = v.tie_set;
   const std::size_t k = tie.size();
   const std::array<Site_index, 3>& triple = trisector.indices();
   std::vector<std::optional<Sign>> first_order, second_order;  // empty without gradients
-  if (gradients != nullptr && !enclosed_sides(*gradients, distances, positions, first_order, second_order))
+  if (gradients != nullptr && !enclosed_sides(*gradients, lifts, positions, first_order, second_order))
     return;  // both sides lose
   std::optional<Sign> forward_along_t;  // POSITIVE: forward is along t
   bool forward = true, backward = true;

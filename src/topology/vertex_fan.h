@@ -32,11 +32,11 @@ struct Departure {
 // predicate: t = (n_j - n_i) x (n_l - n_i) is tangent to the curve at v, so d_s - r has the sign of
 // t.(n_s - n_i) on one side and the opposite on the other; which side is forward, the first predicate
 // answered to first order tells. Two sites of opposite certain signs end it at once. Where the first order
-// is certainly 0 (n_s on the circle of the triple's n: balls tangent to one circle), the distances D_k = |v - p_k|
-// give the second order, the same on both sides. O(k) intervals, for the large tie sets whose departures run
-// through all k sites.
+// is certainly 0 (n_s on the circle of the triple's n: balls tangent to one circle), the lifts 1 / |v - p_k|
+// (tie_gradients) give the second order, the same on both sides. O(k) intervals, for the large tie sets whose
+// departures run through all k sites.
 void departures_along(const std::vector<Site>& sites, const Diagram_vertex& v, const Trisector& trisector,
                       const std::array<std::size_t, 3>& positions, std::vector<Departure>& out,
-                      const Tie_gradients* gradients = nullptr, const std::vector<Interval>* distances = nullptr);
+                      const Tie_gradients* gradients = nullptr, const std::vector<Interval>* lifts = nullptr);
 
 }  // namespace apollonius

@@ -52,6 +52,12 @@ std::vector<std::array<Site_index, 3>> departing_triples(const std::vector<Site>
   return out;
 }
 
+// The vertex with the largest tie set (the first of them), or end() if there is none.
+std::vector<Diagram_vertex>::const_iterator largest_tie(const Diagram& diagram) {
+  return std::max_element(diagram.vertices.begin(), diagram.vertices.end(),
+                          [](const Diagram_vertex& a, const Diagram_vertex& b) { return a.tie_set.size() < b.tie_set.size(); });
+}
+
 struct Star_counts {
   std::size_t vertices = 0, given_up = 0, departures = 0, offered = 0;
 };
@@ -128,10 +134,7 @@ void check_star_of_largest_tie(Site_family family, std::size_t n, std::size_t at
   INFO(name);
   Input_time_limit limit(seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60), name);
   const Diagram diagram = octree_diagram(sites, Octree_options{});
-  const auto fewer_sites = [](const Diagram_vertex& a, const Diagram_vertex& b) {
-    return a.tie_set.size() < b.tie_set.size();
-  };
-  const auto largest = std::max_element(diagram.vertices.begin(), diagram.vertices.end(), fewer_sites);
+  const auto largest = largest_tie(diagram);
   REQUIRE(largest != diagram.vertices.end());
   const std::size_t k = largest->tie_set.size();
   CHECK(k >= at_least_tied);
@@ -179,22 +182,20 @@ TEST_CASE("regression: diagram_triples_blowup_sphere_tangent_1000_2") {
   CHECK(topology.cells.size() == 1000);
 }
 
-// departures_along with v's enclosures (gradients and distances) against departures_along with neither, on
+// departures_along with v's enclosures (gradients and lifts) against departures_along with neither, on
 // every triple the star offers at the vertex where 120 balls tangent to one circle tie. Their n_k lie on one
-// circle, so every first order is 0: the distances' second order decides most sites without a predicate.
+// circle, so every first order is 0: the lifts' second order decides most sites without a predicate.
 TEST_CASE("the enclosures' second order at a vertex of balls tangent to one circle agrees with the predicate") {
   const std::vector<Site> sites = generate_sites(Site_family::circle_tangent, 120, 2);
   Input_time_limit limit(seconds_from_environment("APOLLONIUS_DIFFERENTIAL_TIME_LIMIT", 60), "circle-tangent 120 seed 2");
   const Diagram diagram = octree_diagram(sites, Octree_options{});
-  const auto fewer_sites = [](const Diagram_vertex& a, const Diagram_vertex& b) {
-    return a.tie_set.size() < b.tie_set.size();
-  };
-  const Diagram_vertex& v = *std::max_element(diagram.vertices.begin(), diagram.vertices.end(), fewer_sites);
+  REQUIRE(largest_tie(diagram) != diagram.vertices.end());
+  const Diagram_vertex& v = *largest_tie(diagram);
   const std::size_t k = v.tie_set.size();
   REQUIRE(k >= 100);
   Tie_gradients gradients;
-  std::vector<Interval> distances;
-  REQUIRE(tie_gradients(sites, v, gradients, &distances));
+  std::vector<Interval> lifts;
+  REQUIRE(tie_gradients(sites, v, gradients, &lifts));
   std::vector<std::array<Site_index, 3>> offered;
   REQUIRE(candidate_departure_triples(sites, v, offered));
   const auto same_departures = [](const std::vector<Departure>& x, const std::vector<Departure>& y) {
@@ -219,7 +220,7 @@ TEST_CASE("the enclosures' second order at a vertex of balls tangent to one circ
     enclosed.clear();
     plain.clear();
     std::uint64_t before = sides_predicates();
-    departures_along(sites, v, trisector, positions, enclosed, &gradients, &distances);
+    departures_along(sites, v, trisector, positions, enclosed, &gradients, &lifts);
     with_enclosures += sides_predicates() - before;
     before = sides_predicates();
     departures_along(sites, v, trisector, positions, plain);
