@@ -230,7 +230,8 @@ template std::optional<Framed_curve_point<Wide_interval>> framed_enclosed_canoni
 template std::optional<Framed_curve_point<Mpfr_interval>> framed_enclosed_canonical_point(const Trisector&);
 
 bool parallel_to_plane(const Trisector& trisector, const Vector4<Rational>& cut) {
-  {  // The interval e1, e2 enclose the exact ones (trisector.h): a certainly nonzero product decides.
+  {  // The interval e1, e2 enclose positive multiples of the exact ones (trisector.h): a certainly nonzero
+     // product decides.
     Rounding_guard guard;
     try {
       const Trisector_geometry<Interval>& g = trisector.geometry<Interval>();

@@ -1,6 +1,9 @@
 #include "predicates/trisector.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include "predicates/rounding_guard.h"
 #include "predicates/trisector_rows.h"
@@ -102,6 +105,35 @@ Sign sign_or(const NT& x, Exact_sign exact_sign) {
   }
 }
 
+// The sign of the permutation (i, j, k, l) of (0, 1, 2, 3), for i < j and k < l.
+Sign permutation_sign(int i, int j, int k, int l) {
+  const std::array<int, 4> p{i, j, k, l};
+  int inversions = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) inversions += p[a] > p[b];
+  return inversions % 2 == 0 ? Sign::POSITIVE : Sign::NEGATIVE;
+}
+
+// The pair of columns whose 2x2 minor of the rows is largest, where the first nonzero one (i, j) is below
+// 2^-26 of it; nothing otherwise. In rounded doubles of the rows from the sites in lexicographic order: a
+// choice of formula, never a sign, and the same for every number type and every frame (the minors of two
+// frames differ by one factor), so that all build the same basis.
+std::optional<std::pair<int, int>> larger_pivot(const std::array<Site, 3>& sites, int i, int j) {
+  std::array<Site, 3> s = sites;
+  const auto key = [](const Site& x) { return std::array<double, 4>{x.x, x.y, x.z, x.w}; };
+  std::sort(s.begin(), s.end(), [&](const Site& x, const Site& y) { return key(x) < key(y); });
+  std::array<std::array<double, 4>, 2> r;
+  for (int m = 0; m < 2; ++m) r[m] = {s[m + 1].x - s[0].x, s[m + 1].y - s[0].y, s[m + 1].z - s[0].z, s[m + 1].w - s[0].w};
+  const auto minor = [&](int p, int q) { return std::fabs(r[0][p] * r[1][q] - r[0][q] * r[1][p]); };
+  std::pair<int, int> largest{i, j};
+  double largest_minor = minor(i, j);
+  for (int p = 0; p < 4; ++p)
+    for (int q = p + 1; q < 4; ++q)
+      if (minor(p, q) > largest_minor) largest = {p, q}, largest_minor = minor(p, q);
+  if (!std::isfinite(largest_minor) || !(minor(i, j) < 0x1p-26 * largest_minor)) return std::nullopt;
+  return largest;
+}
+
 }  // namespace
 
 const char* to_string(Curve_shape shape) {
@@ -128,8 +160,8 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
   const Vector4<NT>&rb = g.rows[0], &rc = g.rows[1];
 
   // The first pair of columns (i, j) whose 2x2 minor is not 0, in a fixed order, so that the filter and the
-  // exact stage build the same basis (and so the same forward direction); rank < 2 means no point at all
-  // (two of the sites would coincide, and they are distinct).
+  // exact stage build the same basis up to positive factors (and so the same forward direction); rank < 2
+  // means no point at all (two of the sites would coincide, and they are distinct).
   // A filter's uncertain signs are decided exactly (Exact_signs), computed once on first need.
   std::optional<Exact_signs> exact;
   const auto exact_signs = [&]() -> const Exact_signs& {
@@ -137,31 +169,84 @@ Trisector_geometry<NT> trisector_geometry(const std::array<Site, 3>& sites) {
     return *exact;
   };
   int pivot_i = -1, pivot_j = -1;
-  NT minor(0);
+  Sign pivot_sign = Sign::ZERO;
   for (int i = 0; i < 4 && pivot_i < 0; ++i)
     for (int j = i + 1; j < 4 && pivot_i < 0; ++j) {
       const NT m = rb[i] * rc[j] - rb[j] * rc[i];
-      if (sign_or(m, [&] { return exact_signs().minor(i, j); }) != Sign::ZERO) pivot_i = i, pivot_j = j, minor = m;
+      pivot_sign = sign_or(m, [&] { return exact_signs().minor(i, j); });
+      if (pivot_sign != Sign::ZERO) pivot_i = i, pivot_j = j;
     }
   if (pivot_i < 0) return g;  // empty
-  std::array<int, 2> free{};
-  for (int k = 0, t = 0; k < 4; ++k)
-    if (k != pivot_i && k != pivot_j) free[t++] = k;
-
-  // Cramer on the pivot columns: the direction f_k has f_k[k] = 1 and 0 in the other free column; the point
-  // has 0 in both free columns.
-  const auto solve = [&](const NT& right_b, const NT& right_c, Vector4<NT>& x) {
-    x[pivot_i] = (right_b * rc[pivot_j] - right_c * rb[pivot_j]) / minor;
-    x[pivot_j] = (rb[pivot_i] * right_c - rc[pivot_i] * right_b) / minor;
+  const auto free_columns = [](int i, int j) {
+    std::array<int, 2> free{};
+    for (int k = 0, t = 0; k < 4; ++k)
+      if (k != i && k != j) free[t++] = k;
+    return free;
   };
+  const std::array<int, 2> free = free_columns(pivot_i, pivot_j);
+
+  // Cramer on the columns (i, j), minor m: the direction f_k has f_k[k] = 1 and 0 in the other free column;
+  // the point has 0 in both free columns.
+  const auto solve = [&](int i, int j, const NT& m, const NT& right_b, const NT& right_c, Vector4<NT>& x) {
+    x[i] = (right_b * rc[j] - right_c * rb[j]) / m;
+    x[j] = (rb[i] * right_c - rc[i] * right_b) / m;
+  };
+  const auto directions = [&](int i, int j, const NT& m) {
+    const std::array<int, 2> columns = free_columns(i, j);
+    std::array<Vector4<NT>, 2> d;
+    for (int t = 0; t < 2; ++t) {
+      d[t] = {NT(0), NT(0), NT(0), NT(0)};
+      d[t][columns[t]] = NT(1);
+      solve(i, j, m, -rb[columns[t]], -rc[columns[t]], d[t]);
+    }
+    return d;
+  };
+  // The exact basis is the pivot's f_0, f_1. Where the pivot's minor is tiny beside another (sites 5e-324
+  // off a lattice plane beside sites at 4), f_t has entries near 1e324 and the Gram-Schmidt step below
+  // cancels them in every filter. There the filters take c f_t instead, one factor c > 0 for both, from the
+  // basis f'_t of the larger minor's columns (i', j'): with (k, l) = free, f_0 = (f'_1[l] f'_0 - f'_0[l] f'_1)
+  // / det and f_1 = (f'_0[k] f'_1 - f'_1[k] f'_0) / det, det = f'_0[k] f'_1[l] - f'_0[l] f'_1[k], and by the
+  // duality of L's directions and the rows' Plucker coordinates det = e e' m / m', e and e' the signs of the
+  // permutations (i, j, k, l) and (i', j', k', l'). Then e1, e2 and monotone are positive multiples of the
+  // exact ones, and gamma1, gamma2 positive multiples too: every predicate on them is a sign, homogeneous in
+  // each (trisector_predicates.h, curve_point.h), and centre and K do not change.
   std::array<Vector4<NT>, 2> f;
-  for (int t = 0; t < 2; ++t) {
-    f[t] = {NT(0), NT(0), NT(0), NT(0)};
-    f[t][free[t]] = NT(1);
-    solve(-rb[free[t]], -rc[free[t]], f[t]);
+  std::optional<std::pair<int, int>> larger;
+  if constexpr (!std::is_same_v<NT, Rational>) larger = larger_pivot(sites, pivot_i, pivot_j);
+  NT larger_minor(0);
+  Sign larger_sign = Sign::ZERO;
+  if (larger) {
+    const auto [i, j] = *larger;
+    larger_minor = rb[i] * rc[j] - rb[j] * rc[i];
+    larger_sign = sign_or(larger_minor, [&, i = i, j = j] { return exact_signs().minor(i, j); });
   }
   g.point = {NT(0), NT(0), NT(0), NT(0)};
-  solve(g.heights[0], g.heights[1], g.point);
+  if (larger_sign == Sign::ZERO) {
+    const NT minor = rb[pivot_i] * rc[pivot_j] - rb[pivot_j] * rc[pivot_i];
+    f = directions(pivot_i, pivot_j, minor);
+    solve(pivot_i, pivot_j, minor, g.heights[0], g.heights[1], g.point);
+  } else {
+    // With d_t = m' f'_t (Cramer without the division), the same combinations give m'^2 |det| f_t.
+    const auto [i, j] = *larger;
+    const std::array<int, 2> larger_free = free_columns(i, j);
+    std::array<Vector4<NT>, 2> d;
+    for (int t = 0; t < 2; ++t) {
+      const int c = larger_free[t];
+      d[t] = {NT(0), NT(0), NT(0), NT(0)};
+      d[t][c] = larger_minor;
+      d[t][i] = rc[c] * rb[j] - rb[c] * rc[j];
+      d[t][j] = rc[i] * rb[c] - rb[i] * rc[c];
+    }
+    const int k = free[0], l = free[1];
+    const Sign det_sign = permutation_sign(pivot_i, pivot_j, k, l) *
+                          permutation_sign(i, j, larger_free[0], larger_free[1]) * pivot_sign * larger_sign;
+    const NT sigma(det_sign == Sign::POSITIVE ? 1 : -1);
+    f[0] = combination(sigma * d[1][l], d[0], -sigma * d[0][l], d[1]);
+    f[1] = combination(sigma * d[0][k], d[1], -sigma * d[1][k], d[0]);
+    f[0][k] = f[1][l] = sigma * (d[0][k] * d[1][l] - d[0][l] * d[1][k]);  // m'^2 |det|
+    f[0][l] = f[1][k] = NT(0);
+    solve(i, j, larger_minor, g.heights[0], g.heights[1], g.point);
+  }
 
   const NT g11 = lorentz_product(f[0], f[0]), g12 = lorentz_product(f[0], f[1]), g22 = lorentz_product(f[1], f[1]);
   const Sign determinant = sign_or(g11 * g22 - g12 * g12, [&] { return exact_signs().determinant(); });

@@ -43,6 +43,8 @@ enum class Trisector_kind : signed char {
 enum class Curve_shape : signed char { none, point, ellipse, hyperbola, parabola, line, circle };
 const char* to_string(Curve_shape shape);
 
+// A filter's e1, e2 and monotone are the exact ones up to a positive factor each (trisector.cpp), which no
+// predicate sees: each is a sign, homogeneous in each of them.
 // Invariants: for ellipse and hyperbola, <e1, e2> = 0, gamma_i = <e_i, e_i> != 0, <centre, e_i> = 0,
 // K = -<centre, centre>. For parabola, <e1, y> = 0 for every direction y of L (e1 is the axis) and
 // gamma2 = <e2, e2> != 0. `monotone` orders open curves: <X, monotone> is strictly increasing along
@@ -112,8 +114,9 @@ Root_number<Rational> euclidean_value(const Field_point<Rational>& p, const Vect
 // far one that are equal to within the hair, and rows of their own sizes from one of the two. Frames differ
 // by a translation s with <s, y> = 0 for every direction y of L (on L the sites' cones agree), and the basis
 // depends only on L's directions and the pivot, whose minors scale by one nonzero factor: so kind, shape,
-// e1, e2, monotone, gamma1, gamma2 and K are those of every frame, and a cut <X, y> = 0 by such a y is the
-// same set in every frame. Only point, centre, rows and heights are relative to the origin
+// gamma signs and K are those of every frame, e1, e2 and monotone those of every frame up to a positive
+// factor each (trisector.cpp: a filter may take its basis from a larger minor), and a cut <X, y> = 0 by such
+// a y is the same set in every frame. Only point, centre, rows and heights are relative to the origin
 // (X_origin = X_a + 2 (p_a - p_origin, w_origin - w_a)).
 template <class NT>
 struct Framed_trisector_geometry {
