@@ -129,6 +129,20 @@ Rational level_between(const Level_value& x, const Level_value& y) {
   return rational_between(x.exact(), y.exact());
 }
 
+// Of sorted distinct heights (at least two), the i whose gap to i + 1 is widest by their enclosures (the
+// first where none is finite): a level there crosses the edges far from their vertices, where intervals
+// order the crossings. A choice of line, not a decision: any level between two consecutive heights of a
+// cycle's vertices lies strictly inside its range.
+std::size_t widest_gap(const std::vector<Level_value>& heights) {
+  std::size_t widest = 0;
+  double width = -INFINITY;
+  for (std::size_t i = 0; i + 1 < heights.size(); ++i) {
+    const double w = heights[i + 1].enclosure().inf() - heights[i].enclosure().sup();
+    if (std::isfinite(w) && w > width) widest = i, width = w;
+  }
+  return widest;
+}
+
 // A rational strictly below (side -1) or above (side +1) x.
 Rational level_beyond(const Level_value& x, int side) {
   if (finite(x.enclosure()))
@@ -268,7 +282,8 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
   // as one too): then the extreme points, rational constructions that were most of this function's time,
   // are not needed.
   if (one_cycle && heights.size() >= 2) {
-    const std::vector<Crossing> crossings = crossings_at(level_between(heights[0], heights[1]));
+    const std::size_t gap = widest_gap(heights);
+    const std::vector<Crossing> crossings = crossings_at(level_between(heights[gap], heights[gap + 1]));
     const auto touches = [](const Crossing& c) { return c.point.root() == Root::SINGLE; };
     if (std::none_of(crossings.begin(), crossings.end(), touches)) return one_face(crossings);
   }
@@ -284,8 +299,11 @@ Face_grouping group_components(const std::vector<Site>& sites, const Diagram& di
       if (on_sheet(p) && on_edge(pe, p, diagram)) heights.emplace_back(t, p, across);
   }
   sort_and_merge(heights);
-  // The lowest slab lies strictly between the cycle's lowest and highest points, at no critical height.
-  if (one_cycle && heights.size() >= 2) return one_face(crossings_at(level_between(heights[0], heights[1])));
+  // Every slab lies strictly between the cycle's lowest and highest points, at no critical height.
+  if (one_cycle && heights.size() >= 2) {
+    const std::size_t gap = widest_gap(heights);
+    return one_face(crossings_at(level_between(heights[gap], heights[gap + 1])));
+  }
 
   std::vector<Rational> levels;
   if (heights.empty()) {
