@@ -21,9 +21,11 @@
 #include "predicates/trisector_predicates.h"
 #include "reference/site_generators.h"
 #include "support/clustered_sites.h"
+#include "support/site_triples.h"
 
 using namespace apollonius;
 using apollonius::testing::clustered_sites;
+using apollonius::testing::for_each_triple;
 
 namespace {
 
@@ -203,15 +205,8 @@ TEST_CASE("the trisector's MPFR geometry and canonical point agree with the exac
   Framed_counts lattice, clustered;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     CAPTURE(seed);
-    const std::vector<Site> s = generate_sites(Site_family::lattice_noise, 14, seed);
-    for (std::size_t a = 0; a < s.size(); ++a)
-      for (std::size_t b = a + 1; b < s.size(); ++b)
-        for (std::size_t c = b + 1; c < s.size(); ++c) {
-          CAPTURE(a);
-          CAPTURE(b);
-          CAPTURE(c);
-          check_framed<Mpfr_interval>({s[a], s[b], s[c]}, lattice);
-        }
+    for_each_triple(generate_sites(Site_family::lattice_noise, 14, seed),
+                    [&](const std::array<Site, 3>& s) { check_framed<Mpfr_interval>(s, lattice); });
   }
   std::mt19937_64 random(20261203);
   for (int trial = 0; trial < 2000; ++trial) {

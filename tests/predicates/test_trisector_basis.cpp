@@ -15,8 +15,10 @@
 #include "predicates/rounding_guard.h"
 #include "predicates/trisector.h"
 #include "reference/site_generators.h"
+#include "support/site_triples.h"
 
 using namespace apollonius;
+using apollonius::testing::for_each_triple;
 
 namespace {
 
@@ -107,19 +109,10 @@ TEST_CASE("on lattices one ulp off and on random sites the interval basis is the
   Counts lattice, uniform;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     CAPTURE(seed);
-    const std::vector<Site> s = generate_sites(Site_family::lattice_noise, 16, seed);
-    for (std::size_t a = 0; a < s.size(); ++a)
-      for (std::size_t b = a + 1; b < s.size(); ++b)
-        for (std::size_t c = b + 1; c < s.size(); ++c) {
-          CAPTURE(a);
-          CAPTURE(b);
-          CAPTURE(c);
-          check_basis({s[a], s[b], s[c]}, lattice);
-        }
-    const std::vector<Site> u = generate_sites(Site_family::uniform, 12, seed);
-    for (std::size_t a = 0; a < u.size(); ++a)
-      for (std::size_t b = a + 1; b < u.size(); ++b)
-        for (std::size_t c = b + 1; c < u.size(); ++c) check_basis({u[a], u[b], u[c]}, uniform);
+    for_each_triple(generate_sites(Site_family::lattice_noise, 16, seed),
+                    [&](const std::array<Site, 3>& s) { check_basis(s, lattice); });
+    for_each_triple(generate_sites(Site_family::uniform, 12, seed),
+                    [&](const std::array<Site, 3>& s) { check_basis(s, uniform); });
   }
   MESSAGE("lattice one ulp off: " << lattice.decided << " of " << lattice.triples << "; uniform: " << uniform.decided
                                   << " of " << uniform.triples);
