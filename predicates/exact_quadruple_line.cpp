@@ -56,6 +56,15 @@ bool null_vector_entry_nonzero(const std::array<Site, 4>& sites, int k) {
   return certain_sign(null_vector_minor<Exact>(sites, k)) != Sign::ZERO;
 }
 
+Sign null_vector_entry_sign(const std::array<Site, 4>& sites, int k) {
+  const Sign parity = k % 2 == 0 ? Sign::POSITIVE : Sign::NEGATIVE;  // n_k = (-1)^k times the minor
+  {
+    const Rounding_guard guard;
+    if (const std::optional<Sign> s = sign_if_certain(null_vector_minor<Interval>(sites, k))) return parity * *s;
+  }
+  return parity * certain_sign(null_vector_minor<Exact>(sites, k));
+}
+
 Quadruple_line<Exact> exact_quadruple_line(const std::array<Site, 4>& sites) {
   std::optional<Quadruple_line<Exact>> line = line_from_point_minors(sites);
   if (!line) return quadruple_line<Exact>(sites);

@@ -20,6 +20,9 @@ Quadruple_line<Exact> exact_quadruple_line(const std::array<Site, 4>& sites);
 // Whether n_k, a 3x3 minor of the site differences, is nonzero, exactly: a few dozen Mpzf operations.
 bool null_vector_entry_nonzero(const std::array<Site, 4>& sites, int k);
 
+// The sign of n_k, exactly: intervals first, then the minor in Exact.
+Sign null_vector_entry_sign(const std::array<Site, 4>& sites, int k);
+
 // quadruple_line.h's pivot rule for number types that never certify a zero (Double_with_magnitude,
 // double-double balls): an entry NT shows nonzero is; one it cannot tell is decided exactly. Sites on a
 // lattice make exact zeros often (four centres in one plane, the weight column of equal balls), where

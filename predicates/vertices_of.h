@@ -73,6 +73,7 @@ struct Vertices_of_predicate {
         return certain;
     } catch (const Uncertain_sign&) {
     }
+    if (std::optional<Quadruple_vertices> certain = conditioned_vertices(q)) return certain;
     if (!may_leave_double_range(q)) return std::nullopt;
     try {
       const Quadruple_line<Wide_interval> line = quadruple_line<Wide_interval>(q.sites);
@@ -87,6 +88,58 @@ struct Vertices_of_predicate {
       return std::nullopt;
     }
   }
+
+  // The line in intervals parametrized by its largest entry k' of n instead of the pivot k (quadruple_line.h).
+  // Centres nearly in one plane (sites 5e-324 off a lattice plane) make n_3 tiny: lambda = X_3 then barely
+  // separates the two roots, mirror images across the plane, and no filter decides the discriminant; X_k'
+  // separates them. A root's label is the pivot's: along X = P + t n, lambda_r = (-B + r sqrt D) / A
+  // (line_roots.h) and X_k grows with t iff n_k > 0, so MINUS is the smaller t iff sign(A) sign(n_k) > 0;
+  // A = <n, n> is the same for every pivot, so the labels under k' are those under k, swapped where n_k and
+  // n_k' differ in sign. Precondition: a Rounding_guard.
+  static std::optional<Quadruple_vertices> conditioned_vertices(const Quadruple& q) {
+    try {
+      int pivot = -1;
+      const auto largest_entry = [&pivot](const Vector4<Interval>& n, const std::array<Site, 4>& sites) {
+        for (int k : {3, 0, 1, 2})
+          if (certainly_nonzero(n[k]) || null_vector_entry_nonzero(sites, k)) {
+            pivot = k;
+            break;
+          }
+        if (pivot < 0) return -1;
+        int largest = -1;
+        for (int k = 0; k < 4; ++k)
+          if (certainly_nonzero(n[k]) && (largest < 0 || magnitude(n[k]) > magnitude(n[largest]))) largest = k;
+        if (largest < 0 || largest == pivot) throw Uncertain_sign();  // nothing to gain over the interval stage
+        return largest;
+      };
+      const Quadruple_line<Interval> line = quadruple_line<Interval>(q.sites, largest_entry);
+      Quadruple_vertices result;
+      if (line.pivot < 0) {
+        result.rank_deficient = true;
+        return result;
+      }
+      const std::optional<Line_roots<Interval>> roots = line_roots(line);
+      if (!roots) return std::nullopt;
+      result.equidistant_curve = roots->whole_line_on_cone;
+      const bool swap = null_vector_entry_sign(q.sites, pivot) != certain_sign(line.n[line.pivot]);
+      for (const Line_root<Interval>& root : roots->roots) {
+        Vertex_coordinates<Interval> X = coordinates_on_line(line, root.lambda);
+        if (!is_valid_root(X, q)) continue;
+        const Root label = !swap || root.root == Root::SINGLE ? root.root : root.root == Root::MINUS ? Root::PLUS : Root::MINUS;
+        result.vertices.push_back(make_vertex(q, label, std::move(X)));
+      }
+      if (result.vertices.size() == 2 && swap) std::swap(result.vertices[0], result.vertices[1]);  // MINUS first
+      return result;
+    } catch (const Uncertain_sign&) {
+      return std::nullopt;
+    }
+  }
+
+  static bool certainly_nonzero(const Interval& x) {
+    const std::optional<Sign> s = sign_if_certain(x);
+    return s && *s != Sign::ZERO;
+  }
+  static double magnitude(const Interval& x) { return std::min(std::fabs(x.inf()), std::fabs(x.sup())); }
 
   // The wide stage with site m of the quadruple as the origin of the line, its vertices moved back to
   // site 0 (move_origin, quadruple_line.h). M's rows relative to site m span the same space, so n

@@ -346,3 +346,49 @@ TEST_CASE("line_roots answers nothing, not a guess, where a filter's sign of A, 
   CHECK_FALSE(line_roots(unsure).has_value());
   CHECK_THROWS_AS(certain_sign(unsure.A), Uncertain_sign);
 }
+
+TEST_CASE("a line of nearly coplanar centres parametrized by its largest entry keeps the pivot's root labels") {
+  // Sites 5e-324 or an ulp off a lattice plane: n_3 is tiny, and lambda = X_3 barely separates the mirror roots.
+  std::mt19937_64 random(20261203);
+  std::uniform_int_distribution<int> step(-1, 1), cell(0, 3), weight(0, 1), plane(0, 1);
+  std::size_t quadruples = 0, decided = 0, two_roots = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    CAPTURE(trial);
+    const double x = plane(random) ? 0.0 : 8.0;
+    std::vector<Site> s;
+    for (int m = 0; m < 4; ++m) {
+      const int off = step(random);
+      const double moved = off == 0 ? x : std::nextafter(x, off * std::numeric_limits<double>::infinity());
+      s.push_back({moved, 4.0 * cell(random), 4.0 * cell(random), weight(random) ? 1.5 : 1.0});
+    }
+    bool distinct = true;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) distinct = distinct && !is_hidden(s[i], i, s[j], j) && !is_hidden(s[j], j, s[i], i);
+    if (!distinct) continue;
+    ++quadruples;
+    const Quadruple q = make_quadruple({0, 1, 2, 3}, s);
+    std::optional<Quadruple_vertices> conditioned;
+    {
+      Rounding_guard guard;
+      conditioned = Vertices_of_predicate::conditioned_vertices(q);
+    }
+    if (!conditioned) continue;
+    ++decided;
+    const Quadruple_vertices exact = Vertices_of_predicate::evaluate<Exact>(q);
+    CHECK(conditioned->rank_deficient == exact.rank_deficient);
+    CHECK(conditioned->equidistant_curve == exact.equidistant_curve);
+    REQUIRE(conditioned->vertices.size() == exact.vertices.size());
+    const Quadruple_line<Exact> line = exact_quadruple_line(q.sites);
+    for (std::size_t i = 0; i < exact.vertices.size(); ++i) {
+      const Vertex &u = conditioned->vertices[i], &v = exact.vertices[i];
+      CHECK(u.root() == v.root());
+      const std::array<Interval, 4> a = u.point_interval(), b = v.point_interval();
+      for (int j = 0; j < 4; ++j) CHECK((a[j].inf() <= b[j].sup() && b[j].inf() <= a[j].sup()));
+    }
+    two_roots += exact.vertices.size() == 2 && line.pivot == 3;
+  }
+  MESSAGE(decided << " of " << quadruples << " quadruples decided by the conditioned line, " << two_roots
+                  << " with two roots at pivot 3");
+  CHECK(decided * 2 > quadruples);
+  CHECK(two_roots > 100);
+}
