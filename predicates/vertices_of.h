@@ -64,8 +64,9 @@ struct Vertices_of_predicate {
     }
   }
 
-  // Intervals, then wide intervals (wide_interval.h): sites spread over many binades (5e-324 to 1e266)
-  // take the line's polynomials, of degree up to 14, out of the double range, where plain intervals
+  // Intervals, then intervals on the line parametrized by its largest entry (conditioned_vertices: nearly
+  // coplanar centres), then wide intervals (wide_interval.h): sites spread over many binades (5e-324 to
+  // 1e266) take the line's polynomials, of degree up to 14, out of the double range, where plain intervals
   // overflow or underflow and only the exact stage, with thousands of bits, decided.
   static std::optional<Quadruple_vertices> interval_stage(const Quadruple& q) {
     try {
