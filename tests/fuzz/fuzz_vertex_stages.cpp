@@ -1,9 +1,10 @@
 // libFuzzer target: the staged vertex predicates against their exact stage alone. A small site set decoded
-// from the bytes; for every quadruple, vertices_of's double-double stage (where it answers) against its
-// exact evaluation, and for every vertex, the ball stages of vertex_conflict (against every site) and
-// vertex_in_box (against bounds on, next to and a few ulps from each rounded coordinate) and the rounding
-// sides against exact comparisons. Any difference prints the input's quadruple and traps. The octree and
-// the brute force share these predicates, so fuzz_vertices cannot see such an error; this target can.
+// from the bytes; for every quadruple, vertices_of's double-double stage and its conditioned line (where
+// they answer) against its exact evaluation, and for every vertex, the ball stages of vertex_conflict
+// (against every site) and vertex_in_box (against bounds on, next to and a few ulps from each rounded
+// coordinate) and the rounding sides against exact comparisons. Any difference prints the input's
+// quadruple and traps. The octree and the brute force share these predicates, so fuzz_vertices cannot see
+// such an error; this target can.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +15,7 @@
 
 #include "fuzz/fuzz_sites.h"
 #include "io/write_sites.h"
+#include "predicates/rounding_guard.h"
 #include "predicates/vertex_conflict.h"
 #include "predicates/vertex_in_box.h"
 #include "predicates/vertex_rounding.h"
@@ -74,19 +76,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (Site_index d = c + 1; d < n; ++d) {
           const Quadruple q = make_quadruple({a, b, c, d}, sites);
           const Quadruple_vertices exact = Vertices_of_predicate::evaluate<Exact>(q);
-          if (const std::optional<Quadruple_vertices> ball = vertices_from_balls(q)) {
-            if (ball->rank_deficient != exact.rank_deficient || ball->equidistant_curve != exact.equidistant_curve ||
-                ball->vertices.size() != exact.vertices.size())
-              report("vertices_of's ball stage differs", q);
+          // A filter stage's answer, where it gives one, against the exact stage: flags, roots and boxes.
+          const auto check_stage = [&](const std::optional<Quadruple_vertices>& stage, const char* differs,
+                                       const char* root_differs, const char* box_misses) {
+            if (!stage) return;
+            if (stage->rank_deficient != exact.rank_deficient || stage->equidistant_curve != exact.equidistant_curve ||
+                stage->vertices.size() != exact.vertices.size())
+              report(differs, q);
             for (std::size_t k = 0; k < exact.vertices.size(); ++k) {
-              if (ball->vertices[k].root() != exact.vertices[k].root()) report("a ball vertex's root differs", q);
-              const Interval box_x = ball->vertices[k].coordinates<Interval>().scaled[0];
+              if (stage->vertices[k].root() != exact.vertices[k].root()) report(root_differs, q);
+              const Interval box_x = stage->vertices[k].coordinates<Interval>().scaled[0];
               const Vertex_coordinates<Exact>& X = exact.vertices[k].coordinates<Exact>();
               const Root_number<Exact> x{X.scaled[0].a, X.scaled[0].b, X.discriminant, X.denominator};
               if (compare(dyadic(box_x.inf()), x) == Sign::POSITIVE || compare(x, dyadic(box_x.sup())) == Sign::POSITIVE)
-                report("a ball vertex's box misses it", q);
+                report(box_misses, q);
             }
+          };
+          check_stage(vertices_from_balls(q), "vertices_of's ball stage differs", "a ball vertex's root differs",
+                      "a ball vertex's box misses it");
+          std::optional<Quadruple_vertices> conditioned;
+          {
+            const Rounding_guard guard;
+            conditioned = Vertices_of_predicate::conditioned_vertices(q);
           }
+          check_stage(conditioned, "vertices_of's conditioned line differs", "a conditioned vertex's root differs",
+                      "a conditioned vertex's box misses it");
           for (const Vertex& v : exact.vertices) check_vertex(v, sites);
         }
   return 0;
