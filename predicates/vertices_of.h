@@ -114,23 +114,17 @@ struct Vertices_of_predicate {
         return largest;
       };
       const Quadruple_line<Interval> line = quadruple_line<Interval>(q.sites, largest_entry);
-      Quadruple_vertices result;
-      if (line.pivot < 0) {
-        result.rank_deficient = true;
+      std::optional<Quadruple_vertices> result = vertices_on_line_if_certain(line, q);
+      if (!result || line.pivot < 0 || null_vector_entry_sign(q.sites, pivot) == certain_sign(line.n[line.pivot]))
         return result;
+      // Swapped labels; in reverse, MINUS comes first again.
+      Quadruple_vertices relabelled;
+      relabelled.equidistant_curve = result->equidistant_curve;
+      for (auto v = result->vertices.rbegin(); v != result->vertices.rend(); ++v) {
+        const Root opposite = v->root() == Root::MINUS ? Root::PLUS : v->root() == Root::PLUS ? Root::MINUS : Root::SINGLE;
+        relabelled.vertices.push_back(make_vertex(q, opposite, v->coordinates<Interval>()));
       }
-      const std::optional<Line_roots<Interval>> roots = line_roots(line);
-      if (!roots) return std::nullopt;
-      result.equidistant_curve = roots->whole_line_on_cone;
-      const bool swap = null_vector_entry_sign(q.sites, pivot) != certain_sign(line.n[line.pivot]);
-      for (const Line_root<Interval>& root : roots->roots) {
-        Vertex_coordinates<Interval> X = coordinates_on_line(line, root.lambda);
-        if (!is_valid_root(X, q)) continue;
-        const Root label = !swap || root.root == Root::SINGLE ? root.root : root.root == Root::MINUS ? Root::PLUS : Root::MINUS;
-        result.vertices.push_back(make_vertex(q, label, std::move(X)));
-      }
-      if (result.vertices.size() == 2 && swap) std::swap(result.vertices[0], result.vertices[1]);  // MINUS first
-      return result;
+      return relabelled;
     } catch (const Uncertain_sign&) {
       return std::nullopt;
     }
