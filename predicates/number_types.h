@@ -36,6 +36,9 @@ inline Sign certain_sign(const Interval& x) {
   throw Uncertain_sign();
 }
 
+// Whether x is certainly not 0 (Pivot_exact_where_uncertain's test, as for the other filter types).
+inline bool certainly_nonzero(const Interval& x) { return x.inf() > 0 || x.sup() < 0; }
+
 inline Sign certain_sign(const Exact& x) { return static_cast<Sign>(static_cast<int>(x.sign())); }
 inline Sign certain_sign(const Rational& x) { return static_cast<Sign>(CGAL::sign(x)); }
 

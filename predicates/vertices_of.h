@@ -101,11 +101,7 @@ struct Vertices_of_predicate {
     try {
       int pivot = -1;
       const auto largest_entry = [&pivot](const Vector4<Interval>& n, const std::array<Site, 4>& sites) {
-        for (int k : {3, 0, 1, 2})
-          if (certainly_nonzero(n[k]) || null_vector_entry_nonzero(sites, k)) {
-            pivot = k;
-            break;
-          }
+        pivot = Pivot_exact_where_uncertain{}(n, sites);
         if (pivot < 0) return -1;
         int largest = -1;
         for (int k = 0; k < 4; ++k)
@@ -130,10 +126,6 @@ struct Vertices_of_predicate {
     }
   }
 
-  static bool certainly_nonzero(const Interval& x) {
-    const std::optional<Sign> s = sign_if_certain(x);
-    return s && *s != Sign::ZERO;
-  }
   static double magnitude(const Interval& x) { return std::min(std::fabs(x.inf()), std::fabs(x.sup())); }
 
   // The wide stage with site m of the quadruple as the origin of the line, its vertices moved back to
