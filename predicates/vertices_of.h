@@ -100,16 +100,20 @@ struct Vertices_of_predicate {
   static std::optional<Quadruple_vertices> conditioned_vertices(const Quadruple& q) {
     try {
       int pivot = -1;
-      const auto largest_entry = [&pivot](const Vector4<Interval>& n, const std::array<Site, 4>& sites) {
+      // False where the largest entry is the pivot (or none is certain): the interval stage's line, which
+      // failed. Returned rather than thrown, as exceptions are slow and this is common on lattices one ulp off.
+      bool worth_trying = true;
+      const auto largest_entry = [&](const Vector4<Interval>& n, const std::array<Site, 4>& sites) {
         pivot = Pivot_exact_where_uncertain{}(n, sites);
-        if (pivot < 0) return -1;
+        if (pivot < 0) return -1;  // rank M < 3, decided exactly
         int largest = -1;
         for (int k = 0; k < 4; ++k)
           if (certainly_nonzero(n[k]) && (largest < 0 || magnitude(n[k]) > magnitude(n[largest]))) largest = k;
-        if (largest < 0 || largest == pivot) throw Uncertain_sign();  // nothing to gain over the interval stage
-        return largest;
+        worth_trying = largest >= 0 && largest != pivot;
+        return worth_trying ? largest : -1;
       };
       const Quadruple_line<Interval> line = quadruple_line<Interval>(q.sites, largest_entry);
+      if (!worth_trying) return std::nullopt;
       std::optional<Quadruple_vertices> result = vertices_on_line_if_certain(line, q);
       if (!result || line.pivot < 0 || null_vector_entry_sign(q.sites, pivot) == certain_sign(line.n[line.pivot]))
         return result;
