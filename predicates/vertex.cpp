@@ -103,17 +103,23 @@ Vertex::Vertex(const Quadruple& quadruple, Root root, Vertex_coordinates<Exact> 
 }
 
 void Vertex::enclose_exact() {
-  const Vertex_coordinates<Exact>& exact = *exact_.get();
-  box_.scaled = enclose(exact);
+  box_.scaled = enclose(*exact_.get());
   double magnitude = 0;
   for (const Interval& x : box_.scaled) magnitude = std::max({magnitude, -x.inf(), x.sup()});
-  if (magnitude >= std::ldexp(1.0, -kPlainRange) && magnitude <= std::ldexp(1.0, kPlainRange)) return;
-  std::optional<long> largest;
-  for (const Quadratic<Exact>& x : exact.scaled)
-    if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact.discriminant, exact.denominator}))
-      largest = std::max(largest.value_or(*e), *e);
-  if (largest && (*largest > kPlainRange || *largest < -kPlainRange))
-    scaled_box_ = Computed_once<Scaled_box>(Scaled_box{*largest, enclose(exact, *largest)});
+  scaled_box_on_demand_ = !(magnitude >= std::ldexp(1.0, -kPlainRange) && magnitude <= std::ldexp(1.0, kPlainRange));
+}
+
+const Scaled_box* Vertex::scaled_box() const {
+  const std::optional<Scaled_box>* box = scaled_box_on_demand_ ? &scaled_box_.get_or_compute([&] {
+    const Vertex_coordinates<Exact>& exact = coordinates<Exact>();
+    std::optional<long> largest;
+    for (const Quadratic<Exact>& x : exact.scaled)
+      if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact.discriminant, exact.denominator}))
+        largest = std::max(largest.value_or(*e), *e);
+    if (!largest || (*largest <= kPlainRange && *largest >= -kPlainRange)) return std::optional<Scaled_box>();
+    return std::optional<Scaled_box>(Scaled_box{*largest, enclose(exact, *largest)});
+  }) : scaled_box_.get();
+  return box != nullptr && *box ? &**box : nullptr;
 }
 
 template <>

@@ -71,7 +71,7 @@ class Vertex {
       : quadruple_(quadruple), root_(root), box_{box}, ball_(std::optional<Ball_coordinates>(ball)) {}
   // From a filter's enclosure of X beyond the double range: `box` is infinite there, `scaled` holds X.
   Vertex(const Quadruple& quadruple, Root root, const std::array<Interval, 4>& box, Scaled_box scaled)
-      : quadruple_(quadruple), root_(root), box_{box}, scaled_box_(std::move(scaled)) {}
+      : quadruple_(quadruple), root_(root), box_{box}, scaled_box_(std::optional<Scaled_box>(std::move(scaled))) {}
 
   const Quadruple& quadruple() const { return quadruple_; }
   const std::array<Site_index, 4>& sites() const { return quadruple_.indices; }
@@ -108,12 +108,13 @@ class Vertex {
   // vertices' memory. Like any write, must not run beside other uses of the same object.
   void release_exact_values();
 
-  // For a vertex made from its exact coordinates (vertices_of's exact stage) or from wide intervals whose
-  // X lies beyond [2^-500, 2^500]; else null.
-  const Scaled_box* scaled_box() const { return scaled_box_.get(); }
+  // For a vertex made from its exact coordinates (vertices_of's exact stage; computed on first use) or from
+  // wide intervals whose X lies beyond [2^-500, 2^500]; else null.
+  const Scaled_box* scaled_box() const;
 
  private:
-  // box_ from exact_, a few ulps wide, and scaled_box_ where X is out of range.
+  // box_ from exact_, a few ulps wide; and whether X may lie out of range, so that scaled_box() computes
+  // a scaled box when first asked.
   void enclose_exact();
 
   Quadruple quadruple_;
@@ -124,8 +125,12 @@ class Vertex {
   Computed_once<std::array<double, 4>> rounded_;
   Computed_once<std::array<Sign, 3>> sides_;
   Computed_once<std::optional<Ball_coordinates>> ball_;
-  // Set when made (exact or wide), if X is out of range; a Computed_once for its size (one pointer, shared by copies).
-  Computed_once<Scaled_box> scaled_box_;
+  // Set when made from wide intervals, if X is out of range. For a vertex made exact whose plain box leaves
+  // [2^-500, 2^500], computed on first use: most are the far root of a line nearly parallel to the cone
+  // (A near 0), which no box holds and no conflict test reads, and its exponents take MPFR. A Computed_once
+  // for its size: one pointer, shared by copies.
+  Computed_once<std::optional<Scaled_box>> scaled_box_;
+  bool scaled_box_on_demand_ = false;
 };
 
 template <>

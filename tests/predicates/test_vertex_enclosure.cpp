@@ -75,7 +75,17 @@ TEST_CASE("the box from exact coordinates is a few ulps wide, and a scaled box h
       ++vertices;
       const long n = binary_exponent(X.denominator);
       if (n < -1000 || n > 1000) ++parts_out_of_range;
+      // The scaled box is computed on first use: a copy that dropped its exact coordinates first computes
+      // them again, and the same box.
+      Vertex released = v;
+      released.release_exact_values();
+      const Scaled_box* again = released.scaled_box();
       const Scaled_box* box = v.scaled_box();
+      REQUIRE((again == nullptr) == (box == nullptr));
+      if (box != nullptr) {
+        CHECK(again->exponent == box->exponent);
+        for (int j = 0; j < 4; ++j) CHECK((again->scaled[j].inf() == box->scaled[j].inf() && again->scaled[j].sup() == box->scaled[j].sup()));
+      }
       for (int j = 0; j < 4; ++j) {
         const Root_number<Exact> x = exact_coordinate(v, j);
         CHECK(holds(v.coordinates<Interval>().scaled[j], 0, x));
