@@ -102,9 +102,9 @@ inline bool in_error_bound_range(double sum_of_squares) {
 constexpr double kSharpenAbove = 0x1p-6;
 void sharpen(Centre_expansion& e, const Site& s, const Box_frame& frame);
 
-// Inline: the refinement expands every candidate of every box.
-inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) {
-  Centre_expansion e;
+// Inline: the refinement expands every candidate of every box. Written into `e` in place: keep_undominated fills an array of them, where a returned value was built on the
+// stack and copied with 16-byte loads of its 8-byte stores, which stall store forwarding.
+inline void expand_at_centre(const Site& s, const Box_frame& frame, Centre_expansion& e) {
   e.offset = {(frame.centre[0] - s.x) * frame.unit, (frame.centre[1] - s.y) * frame.unit,
               (frame.centre[2] - s.z) * frame.unit};
   const std::array<double, 3>& offset = e.offset;
@@ -119,6 +119,10 @@ inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) 
   e.weighted_error = 8 * kUnitRoundoff * e.magnitude;
   e.weighted_known = e.usable;
   if (!(e.usable && e.weighted_error <= kSharpenAbove * frame.reach)) sharpen(e, s, frame);
+}
+inline Centre_expansion expand_at_centre(const Site& s, const Box_frame& frame) {
+  Centre_expansion e;
+  expand_at_centre(s, frame, e);
   return e;
 }
 

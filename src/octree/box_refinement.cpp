@@ -215,7 +215,7 @@ void Box_refinement<Kernel>::keep_undominated(const Axis_box& box, std::size_t f
   const Site* sites = sites_.data();
   expansion_.resize(count);
   Centre_expansion* expansion = expansion_.data();
-  for (std::size_t k = 0; k < count; ++k) expansion[k] = expand_at_centre(sites[candidate[k]], frame);
+  for (std::size_t k = 0; k < count; ++k) expand_at_centre(sites[candidate[k]], frame, expansion[k]);
 
   // The witnesses: the candidates of least known d at the centre, ascending. Only a witness closer at
   // the centre can dominate a site on the box.
