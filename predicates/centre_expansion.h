@@ -102,8 +102,9 @@ inline bool in_error_bound_range(double sum_of_squares) {
 constexpr double kSharpenAbove = 0x1p-6;
 void sharpen(Centre_expansion& e, const Site& s, const Box_frame& frame);
 
-// Inline: the refinement expands every candidate of every box. Written into `e` in place: keep_undominated fills an array of them, where a returned value was built on the
-// stack and copied with 16-byte loads of its 8-byte stores, which stall store forwarding.
+// Inline: the refinement expands every candidate of every box. Written into `e` in place: keep_undominated
+// fills an array of them, where a returned value was built on the stack and copied with 16-byte loads of its
+// 8-byte stores, which stall store forwarding.
 inline void expand_at_centre(const Site& s, const Box_frame& frame, Centre_expansion& e) {
   e.offset = {(frame.centre[0] - s.x) * frame.unit, (frame.centre[1] - s.y) * frame.unit,
               (frame.centre[2] - s.z) * frame.unit};

@@ -93,6 +93,16 @@ std::array<Interval, 4> enclose(const Vertex_coordinates<Exact>& X, long k = 0) 
 // Where a plain box's products with site coordinates stop being normal doubles.
 constexpr long kPlainRange = 500;
 
+// X at the largest coordinate's exponent (MPFR), where that lies beyond 2^+-kPlainRange; else nothing.
+std::optional<Scaled_box> scaled_enclosure(const Vertex_coordinates<Exact>& X) {
+  std::optional<long> largest;
+  for (const Quadratic<Exact>& x : X.scaled)
+    if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, X.discriminant, X.denominator}))
+      largest = std::max(largest.value_or(*e), *e);
+  if (!largest || (*largest <= kPlainRange && *largest >= -kPlainRange)) return std::nullopt;
+  return Scaled_box{*largest, enclose(X, *largest)};
+}
+
 }  // namespace
 
 Vertex::Vertex(const Quadruple& quadruple, Root root, Vertex_coordinates<Exact> exact)
@@ -110,15 +120,9 @@ void Vertex::enclose_exact() {
 }
 
 const Scaled_box* Vertex::scaled_box() const {
-  const std::optional<Scaled_box>* box = scaled_box_on_demand_ ? &scaled_box_.get_or_compute([&] {
-    const Vertex_coordinates<Exact>& exact = coordinates<Exact>();
-    std::optional<long> largest;
-    for (const Quadratic<Exact>& x : exact.scaled)
-      if (const std::optional<long> e = binary_exponent(Root_number<Exact>{x.a, x.b, exact.discriminant, exact.denominator}))
-        largest = std::max(largest.value_or(*e), *e);
-    if (!largest || (*largest <= kPlainRange && *largest >= -kPlainRange)) return std::optional<Scaled_box>();
-    return std::optional<Scaled_box>(Scaled_box{*largest, enclose(exact, *largest)});
-  }) : scaled_box_.get();
+  const std::optional<Scaled_box>* box =
+      scaled_box_on_demand_ ? &scaled_box_.get_or_compute([&] { return scaled_enclosure(coordinates<Exact>()); })
+                            : scaled_box_.get();
   return box != nullptr && *box ? &**box : nullptr;
 }
 

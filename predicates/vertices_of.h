@@ -115,13 +115,18 @@ struct Vertices_of_predicate {
       const Quadruple_line<Interval> line = quadruple_line<Interval>(q.sites, largest_entry);
       if (!worth_trying) return std::nullopt;
       std::optional<Quadruple_vertices> result = vertices_on_line_if_certain(line, q);
-      if (!result || line.pivot < 0 || null_vector_entry_sign(q.sites, pivot) == certain_sign(line.n[line.pivot]))
+      if (!result || line.pivot < 0) return result;
+      // sign(n_k): the line's own interval n_k where it is certain (Pivot_exact_where_uncertain mostly took
+      // k there), else exactly.
+      const std::optional<Sign> pivot_entry = sign_if_certain(line.n[pivot]);
+      if ((pivot_entry ? *pivot_entry : null_vector_entry_sign(q.sites, pivot)) == certain_sign(line.n[line.pivot]))
         return result;
       // Swapped labels; in reverse, MINUS comes first again.
       Quadruple_vertices relabelled;
       relabelled.equidistant_curve = result->equidistant_curve;
       for (auto v = result->vertices.rbegin(); v != result->vertices.rend(); ++v) {
-        const Root opposite = v->root() == Root::MINUS ? Root::PLUS : v->root() == Root::PLUS ? Root::MINUS : Root::SINGLE;
+        const Root opposite =
+            v->root() == Root::MINUS ? Root::PLUS : v->root() == Root::PLUS ? Root::MINUS : Root::SINGLE;
         relabelled.vertices.push_back(make_vertex(q, opposite, v->coordinates<Interval>()));
       }
       return relabelled;

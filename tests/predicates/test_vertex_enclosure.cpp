@@ -84,7 +84,10 @@ TEST_CASE("the box from exact coordinates is a few ulps wide, and a scaled box h
       REQUIRE((again == nullptr) == (box == nullptr));
       if (box != nullptr) {
         CHECK(again->exponent == box->exponent);
-        for (int j = 0; j < 4; ++j) CHECK((again->scaled[j].inf() == box->scaled[j].inf() && again->scaled[j].sup() == box->scaled[j].sup()));
+        for (int j = 0; j < 4; ++j) {
+          CHECK(again->scaled[j].inf() == box->scaled[j].inf());
+          CHECK(again->scaled[j].sup() == box->scaled[j].sup());
+        }
       }
       for (int j = 0; j < 4; ++j) {
         const Root_number<Exact> x = exact_coordinate(v, j);
