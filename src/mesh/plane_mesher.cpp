@@ -38,8 +38,20 @@ double squared_length(const Point3& a, const Point3& b) {
   return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
 }
 
-// Delaunay refinement criteria measured on the lifted triangle: its longest edge at most the step, and the
-// sine of its least angle at least sqrt(0.125) (20.7 degrees), as CGAL's Delaunay_mesh_size_criteria_2.
+// Delaunay refinement criteria: the lifted triangle's longest edge at most the step, and the sine of its
+// least angle at least sqrt(0.125) (20.7 degrees, as CGAL's Delaunay_mesh_size_criteria_2), in the lift or
+// in the plane, whichever is better.
+//
+// Termination: a triangle is refined only where its lifted longest edge exceeds size_factor x step, or it
+// is skinny in the plane (circumradius over shortest edge above sqrt(2)). Its circumcentre is then at
+// least circumradius from every vertex, and an encroaching one is dropped (no constraint is split), so as
+// in Ruppert's argument no new vertex comes nearer to the others than min(the least distance between the
+// vertices before refinement, size_factor x step / (2 L)) for L the lift's largest stretch over the region, which is finite
+// (the sheet's slope is at most delta / sqrt(f^2 - delta^2), bisector_frame.h): finitely many points.
+// Measured in the lift alone, the angle criterion looped: over a steep sheet (nearly internally tangent
+// balls) the lift stretches one direction up to 6 times, planar circumcentres then never make lifted
+// angles of 20.7 degrees, and the points piled up at one spot without end
+// (tests/data/regression/mesh_refinement_never_ended_on_a_steep_sheet.balls).
 class Lifted_criteria {
  public:
   using Quality = std::pair<double, double>;  // squared least sine, squared longest edge / step^2
@@ -54,20 +66,35 @@ class Lifted_criteria {
       return q.first < kSquaredSineBound ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
     }
     CGAL::Mesh_2::Face_badness operator()(const Face_handle& f, Quality& q) const {
-      std::array<Point3, 3> x;
-      for (int k = 0; k < 3; ++k) x[k] = input_->lift(to_point2(f->vertex(k)->point()));
-      std::array<double, 3> l{squared_length(x[1], x[2]), squared_length(x[2], x[0]), squared_length(x[0], x[1])};
-      std::sort(l.begin(), l.end());
-      const Point3 u{x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]};
-      const Point3 v{x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
-      const Point3 c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      const double twice_area_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-      q.first = l[1] * l[2] > 0 ? twice_area_squared / (l[1] * l[2]) : 0;
-      q.second = l[2] / (input_->step * input_->step * input_->size_factor * input_->size_factor);
+      std::array<Point3, 3> lifted, planar;
+      for (int k = 0; k < 3; ++k) {
+        const Point& p = f->vertex(k)->point();
+        lifted[k] = input_->lift(to_point2(p));
+        planar[k] = {p.x(), p.y(), 0};
+      }
+      double longest_squared = 0;
+      q.first = std::max(squared_least_sine(lifted, longest_squared), squared_least_sine(planar));
+      q.second = longest_squared / (input_->step * input_->step * input_->size_factor * input_->size_factor);
       return operator()(q);
     }
 
    private:
+    // The squared sine of the triangle's least angle (0 for a degenerate one), and its longest edge squared.
+    static double squared_least_sine(const std::array<Point3, 3>& x, double& longest_squared) {
+      std::array<double, 3> l{squared_length(x[1], x[2]), squared_length(x[2], x[0]), squared_length(x[0], x[1])};
+      std::sort(l.begin(), l.end());
+      longest_squared = l[2];
+      const Point3 u{x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]};
+      const Point3 v{x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
+      const Point3 c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const double twice_area_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+      return l[1] * l[2] > 0 ? twice_area_squared / (l[1] * l[2]) : 0;
+    }
+    static double squared_least_sine(const std::array<Point3, 3>& x) {
+      double unused = 0;
+      return squared_least_sine(x, unused);
+    }
+
     static constexpr double kSquaredSineBound = 0.125;
     const Plane_mesh_input* input_;
   };

@@ -27,6 +27,7 @@
 #include "mesh/edge_samples.h"
 #include "mesh/mesh_quality.h"
 #include "octree/octree_diagram.h"
+#include "support/time_limit.h"
 #include "topology/build_topology.h"
 
 using namespace apollonius;
@@ -283,6 +284,30 @@ TEST_CASE("regression: measure_cells_volumes_exceed_box, against the closed mesh
     MESSAGE("mesh " << c.volume << " measure " << exact[cell.site].volume << " box " << box_volume(mesh.box));
     CHECK(std::abs(c.volume - exact[cell.site].volume) <= 0.05 * mesh.step * c.area);
   }
+}
+
+// Fixed: refinement measured the least angle on the lifted triangles alone, which planar circumcentres cannot
+// raise where the sheet's lift stretches one direction 6 times; the points piled up at one spot without end.
+TEST_CASE("regression: mesh_refinement_never_ended_on_a_steep_sheet, closed cells of a bounded point density") {
+  const std::string path = std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_refinement_never_ended_on_a_steep_sheet.balls";
+  const Site_input input = read_sites(path, Read_options{});
+  const Diagram_topology topology = topology_of(input.sites);
+  Mesh_options options;
+  options.lloyd_iterations = 2;
+  testing::Input_time_limit limit(30, path);
+  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+  limit.stop();
+  check_mesh(input.sites, mesh, topology, path);
+  // Delaunay refinement leaves edges of about the step (1.4 S at most): a few points per S^2 of surface.
+  double area = 0;
+  for (const Mesh_triangle& t : mesh.triangles) {
+    const Point3 &a = mesh.points[t.vertices[0]], &b = mesh.points[t.vertices[1]], &c = mesh.points[t.vertices[2]];
+    const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    area += 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) + std::pow(u[2] * v[0] - u[0] * v[2], 2) +
+                            std::pow(u[0] * v[1] - u[1] * v[0], 2));
+  }
+  MESSAGE(mesh.points.size() << " points on " << area / (mesh.step * mesh.step) << " S^2");
+  CHECK(static_cast<double>(mesh.points.size()) <= 4 * area / (mesh.step * mesh.step));
 }
 
 TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius w + P") {
