@@ -28,7 +28,11 @@ struct Vertex_info {
 using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<Vertex_info, Kernel, CGAL::Delaunay_mesh_vertex_base_2<Kernel>>;
 using Face_base = CGAL::Delaunay_mesh_face_base_2<Kernel>;
 using Data_structure = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
-using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Data_structure, CGAL::Exact_intersections_tag>;
+// Exact_predicates_tag, the tag for a kernel of inexact constructions: where two constraints cross (edge
+// chords meeting at a small angle near a vertex of many tied sites), it inserts their rounded intersection
+// as a vertex. Exact_intersections_tag assumes exact constructions, and Epick's rounded point crashed the
+// triangulation (tests/data/regression/mesh_crashed_where_edge_chords_cross.balls).
+using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Data_structure, CGAL::Exact_predicates_tag>;
 using Face_handle = Triangulation::Face_handle;
 using Point = Kernel::Point_2;
 

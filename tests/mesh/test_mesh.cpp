@@ -310,6 +310,27 @@ TEST_CASE("regression: mesh_refinement_never_ended_on_a_steep_sheet, closed cell
   CHECK(static_cast<double>(mesh.points.size()) <= 4 * area / (mesh.step * mesh.step));
 }
 
+// Fixed: two faces' edge chords cross near the vertex where all 300 balls tie, and the constrained
+// triangulation, told that intersections were constructed exactly (they are rounded), crashed.
+TEST_CASE("regression: mesh_crashed_where_edge_chords_cross, and the open cells it reports are the open ones") {
+  const std::string path = std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_crashed_where_edge_chords_cross.balls";
+  const Site_input input = read_sites(path, Read_options{});
+  const Diagram_topology topology = topology_of(input.sites);
+  Mesh_options options;
+  options.lloyd_iterations = 2;
+  testing::Input_time_limit limit(30, path);
+  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
+  limit.stop();
+  REQUIRE(!mesh.triangles.empty());
+  for (const Point3& p : mesh.points) CHECK((std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])));
+  std::size_t open = 0;
+  for (const Diagram_cell& cell : topology.cells) {
+    const auto triangles = cell_triangles(mesh, cell.site);
+    if (!triangles.empty() && !check_cell(mesh, triangles).closed) ++open;
+  }
+  CHECK(mesh.statistics.open_cells == open);
+}
+
 TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius w + P") {
   for (std::uint64_t seed = 31; seed <= 36; ++seed) {
     const std::size_t n = 4 + seed % 5;
