@@ -384,7 +384,7 @@ struct Builder {
       // Both ends on another wall: Newton in the plane for the point of the sheet on both walls.
       const int k2 = axis_of(other);
       const double bound2 = bound_of(other);
-      const double scale = std::max(1.0, std::hypot(p[0], p[1]));
+      const double scale = std::max(step, std::hypot(p[0], p[1]));  // in the input's units, as the tolerances
       for (int i = 0; i < 30; ++i) {
         const Point3 y = frame.lift(p);
         const double f1 = y[k] - bound, f2 = y[k2] - bound2;
@@ -451,7 +451,7 @@ struct Builder {
   Point3 onto_wall(const Bisector_frame& frame, Point2 p, int wall, Site_index a) const {
     const int k = wall == kProbe ? 0 : axis_of(wall);
     const double bound = wall == kProbe ? 0 : bound_of(wall);
-    const double scale = std::max({1.0, std::abs(bound), std::hypot(p[0], p[1])});
+    const double scale = std::max({step, std::abs(bound), std::hypot(p[0], p[1])});  // in the input's units
     auto level = [&](const Point3& y) { return wall == kProbe ? outside(y, kProbe, a) : y[k] - bound; };
     for (int i = 0; i < 40; ++i) {
       const Point3 y = frame.lift(p);

@@ -36,10 +36,22 @@ using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Data_st
 using Face_handle = Triangulation::Face_handle;
 using Point = Kernel::Point_2;
 
-Point2 to_point2(const Point& p) { return {p.x(), p.y()}; }
+// The triangulation sees the plane's coordinates times a power of two that brings the largest to [1, 2):
+// CGAL's filters then never overflow or underflow (balls scaled by 2^+-300 sent every incircle test to
+// Mpzf, minutes for 60 balls), and since scaling by a power of two is exact, every predicate and
+// construction gives the scaled result of the unscaled one, bit for bit.
+struct Plane_scale {
+  double factor = 1;
+  Point to_triangulation(const Point2& p) const { return Point(p[0] * factor, p[1] * factor); }
+  Point2 to_plane(const Point& p) const { return {p.x() / factor, p.y() / factor}; }
+};
 
-double squared_length(const Point3& a, const Point3& b) {
-  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+Plane_scale scale_of(const Plane_mesh_input& input) {
+  double largest = 0;
+  for (const Plane_mesh_input::Polyline& line : input.polylines)
+    for (const Point2& p : line.points) largest = std::max({largest, std::fabs(p[0]), std::fabs(p[1])});
+  if (!(largest > 0) || !std::isfinite(largest)) return {};
+  return {std::ldexp(1.0, std::clamp(-std::ilogb(largest), -1022, 1023))};
 }
 
 // Delaunay refinement criteria: the lifted triangle's longest edge at most the step, and the sine of its
@@ -60,11 +72,11 @@ class Lifted_criteria {
  public:
   using Quality = std::pair<double, double>;  // squared least sine, squared longest edge / step^2
 
-  Lifted_criteria(const Plane_mesh_input& input) : input_(&input) {}
+  Lifted_criteria(const Plane_mesh_input& input, const Plane_scale& scale) : input_(&input), scale_(scale) {}
 
   class Is_bad {
    public:
-    explicit Is_bad(const Plane_mesh_input* input) : input_(input) {}
+    Is_bad(const Plane_mesh_input* input, const Plane_scale& scale) : input_(input), scale_(scale) {}
     CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
       if (q.second > 1) return CGAL::Mesh_2::IMPERATIVELY_BAD;
       return q.first < kSquaredSineBound ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
@@ -73,48 +85,70 @@ class Lifted_criteria {
       std::array<Point3, 3> lifted, planar;
       for (int k = 0; k < 3; ++k) {
         const Point& p = f->vertex(k)->point();
-        lifted[k] = input_->lift(to_point2(p));
+        lifted[k] = input_->lift(scale_.to_plane(p));
         planar[k] = {p.x(), p.y(), 0};
       }
-      double longest_squared = 0;
-      q.first = std::max(squared_least_sine(lifted, longest_squared), squared_least_sine(planar));
-      q.second = longest_squared / (input_->step * input_->step * input_->size_factor * input_->size_factor);
+      int exponent = 0;
+      const std::array<Point3, 3> edges = scaled_edges(lifted, exponent);
+      std::array<double, 3> l{squared_norm(edges[0]), squared_norm(edges[1]), squared_norm(edges[2])};
+      std::sort(l.begin(), l.end());
+      const double step = std::ldexp(input_->step, -exponent);  // the step in the edges' scale
+      q.first = std::max(squared_least_sine(lifted), squared_least_sine(planar));
+      q.second = l[2] / (step * step * input_->size_factor * input_->size_factor);
       return operator()(q);
     }
 
    private:
-    // The squared sine of the triangle's least angle (0 for a degenerate one), and its longest edge squared.
-    static double squared_least_sine(const std::array<Point3, 3>& x, double& longest_squared) {
-      std::array<double, 3> l{squared_length(x[1], x[2]), squared_length(x[2], x[0]), squared_length(x[0], x[1])};
-      std::sort(l.begin(), l.end());
-      longest_squared = l[2];
-      const Point3 u{x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]};
-      const Point3 v{x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
-      const Point3 c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      const double twice_area_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-      return l[1] * l[2] > 0 ? twice_area_squared / (l[1] * l[2]) : 0;
+    static double squared_norm(const Point3& x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; }
+
+    // The edges x1 - x2, x2 - x0, x1 - x0 times 2^-exponent, a power of two that brings their largest
+    // coordinate to [1, 2): exact, so no square underflows where the sites are scaled by 2^-300.
+    static std::array<Point3, 3> scaled_edges(const std::array<Point3, 3>& x, int& exponent) {
+      std::array<Point3, 3> e;
+      const std::array<std::array<int, 2>, 3> ends{{{1, 2}, {2, 0}, {1, 0}}};
+      double largest = 0;
+      for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) {
+          e[k][a] = x[ends[k][0]][a] - x[ends[k][1]][a];
+          largest = std::max(largest, std::fabs(e[k][a]));
+        }
+      exponent = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+      for (Point3& edge : e)
+        for (double& c : edge) c = std::ldexp(c, -exponent);
+      return e;
     }
+
+    // The squared sine of the triangle's least angle (0 for a degenerate one): invariant under scaling.
     static double squared_least_sine(const std::array<Point3, 3>& x) {
-      double unused = 0;
-      return squared_least_sine(x, unused);
+      int exponent = 0;
+      const std::array<Point3, 3> e = scaled_edges(x, exponent);
+      std::array<double, 3> l{squared_norm(e[0]), squared_norm(e[1]), squared_norm(e[2])};
+      std::sort(l.begin(), l.end());
+      const Point3& u = e[2];  // x1 - x0
+      const Point3& v = e[1];  // x2 - x0
+      const Point3 c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      return l[1] * l[2] > 0 ? squared_norm(c) / (l[1] * l[2]) : 0;
     }
 
     static constexpr double kSquaredSineBound = 0.125;
     const Plane_mesh_input* input_;
+    Plane_scale scale_;
   };
 
-  Is_bad is_bad_object() const { return Is_bad(input_); }
+  Is_bad is_bad_object() const { return Is_bad(input_, scale_); }
 
  private:
   const Plane_mesh_input* input_;
+  Plane_scale scale_;
 };
 
 // The Lloyd density, through Lloyd_move_2's sizing field: density 1 / s^4 (CGAL's convention, d = 2).
 thread_local const std::function<double(const Point2&)>* current_density = nullptr;
+thread_local Plane_scale current_scale;
 struct Density_sizing {
   static const bool is_vertex_update_needed = false;
   explicit Density_sizing(Triangulation&) {}
-  double operator()(const Point& p) const { return std::pow((*current_density)(to_point2(p)), -0.25); }
+  double operator()(const Point& p) const { return std::pow((*current_density)(current_scale.to_plane(p)), -0.25); }
 };
 
 // Regions: the classes of finite faces joined across unconstrained edges.
@@ -165,7 +199,8 @@ double squared_distance_to_segment(const Point2& p, const Point2& a, const Point
 // Starts the interior from a triangular lattice of spacing `step` on the sheet (measured with the density
 // at the domain's centre), keeping the points at least 0.55 step from every constraint: the Lloyd
 // iterations then only have the layer along the boundary to settle.
-void seed_lattice(Triangulation& cdt, const Plane_mesh_input& input, const std::vector<Point>& seeds) {
+void seed_lattice(Triangulation& cdt, const Plane_mesh_input& input, const Plane_scale& scale,
+                  const std::vector<Point>& seeds) {
   Marker::mark_facets(cdt, seeds.begin(), seeds.end(), false);
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
@@ -178,12 +213,15 @@ void seed_lattice(Triangulation& cdt, const Plane_mesh_input& input, const std::
     }
   }
   if (!(lo[0] <= hi[0])) return;
-  const Point2 middle{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2};
-  const double spacing = input.step / std::sqrt(input.density(middle));
+  const Point middle((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2);
+  const double spacing = input.step / std::sqrt(input.density(scale.to_plane(middle))) * scale.factor;
   if ((hi[0] - lo[0]) * (hi[1] - lo[1]) > 4e6 * spacing * spacing) return;  // a huge domain: refinement alone
   std::vector<std::pair<Point2, Point2>> segments;
   for (const Plane_mesh_input::Polyline& line : input.polylines)
-    for (std::size_t k = 0; k + 1 < line.points.size(); ++k) segments.push_back({line.points[k], line.points[k + 1]});
+    for (std::size_t k = 0; k + 1 < line.points.size(); ++k) {
+      const Point a = scale.to_triangulation(line.points[k]), b = scale.to_triangulation(line.points[k + 1]);
+      segments.push_back({{a.x(), a.y()}, {b.x(), b.y()}});
+    }
   const double clearance = 0.55 * spacing, row = spacing * std::sqrt(3.0) / 2;
   std::vector<Point> lattice;
   int parity = 0;
@@ -208,11 +246,12 @@ void seed_lattice(Triangulation& cdt, const Plane_mesh_input& input, const std::
 }  // namespace
 
 Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
+  const Plane_scale scale = scale_of(input);
   Triangulation cdt;
   for (const Plane_mesh_input::Polyline& polyline : input.polylines) {
     std::vector<Triangulation::Vertex_handle> handles;
     for (std::size_t k = 0; k < polyline.points.size(); ++k) {
-      auto v = cdt.insert(Point(polyline.points[k][0], polyline.points[k][1]));
+      auto v = cdt.insert(scale.to_triangulation(polyline.points[k]));
       if (polyline.ids[k] >= 0) v->info().id = polyline.ids[k];
       handles.push_back(v);
     }
@@ -231,16 +270,16 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
     for (Face_handle f : region)
       if (area(f) > area(largest)) largest = f;
     const Point c = centroid(largest);
-    if (input.inside(to_point2(c)))
+    if (input.inside(scale.to_plane(c)))
       any_inside = true;
     else
       seeds.push_back(c);
   }
   if (!any_inside) return output;
 
-  if (input.lattice) seed_lattice(cdt, input, seeds);
+  if (input.lattice) seed_lattice(cdt, input, scale, seeds);
 
-  Lifted_criteria criteria(input);
+  Lifted_criteria criteria(input, scale);
   CGAL::Delaunay_mesher_no_edge_refinement_2<Triangulation, Lifted_criteria> mesher(cdt, criteria);
   mesher.set_seeds(seeds.begin(), seeds.end(), false);
   mesher.refine_mesh();
@@ -264,6 +303,7 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
 
   if (input.lloyd_iterations > 0) {
     current_density = &input.density;
+    current_scale = scale;
     using Move = CGAL::Mesh_2::Lloyd_move_2<Triangulation, Density_sizing>;
     CGAL::Mesh_2::Mesh_global_optimizer_2<Triangulation, Move> lloyd(cdt, input.lloyd_convergence, input.lloyd_freeze);
     lloyd.set_seeds(seeds.begin(), seeds.end(), false);
@@ -290,7 +330,7 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
       for (int k = 0; k < 3; ++k) {
         auto v = f->vertex(k);
         if (v->info().id == -1) {
-          output.new_points.push_back(input.lift(to_point2(v->point())));
+          output.new_points.push_back(input.lift(scale.to_plane(v->point())));
           v->info().id = -1 - static_cast<std::int64_t>(output.new_points.size());  // -2 - k for new point k
         }
         t[k] = v->info().id;

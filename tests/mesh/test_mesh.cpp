@@ -331,6 +331,38 @@ TEST_CASE("regression: mesh_crashed_where_edge_chords_cross, and the open cells 
   CHECK(mesh.statistics.open_cells == open);
 }
 
+// Fixed: at 2^-300 every lifted triangle's squared area underflowed to 0, so each one looked skinny and
+// refinement never ended; at 2^+-300 CGAL's filters also over- or underflowed, and each incircle test went
+// to Mpzf. The triangulation now works in coordinates scaled by a power of two.
+TEST_CASE("sites scaled by 2^-300 and 2^300: the same mesh, scaled") {
+  const std::vector<Site> sites = random_sites(41, 12, 0.25);
+  Mesh_options options;
+  options.step = 0.08;
+  options.lloyd_iterations = 0;  // Lloyd's moves are applied in the order of vertex addresses
+  const Diagram_mesh reference = mesh_diagram(sites, topology_of(sites), options);
+  for (const int exponent : {-300, 300}) {
+    CAPTURE(exponent);
+    std::vector<Site> scaled = sites;
+    for (Site& s : scaled)
+      for (double* c : {&s.x, &s.y, &s.z, &s.w}) *c = std::ldexp(*c, exponent);
+    Mesh_options scaled_options = options;
+    scaled_options.step = std::ldexp(options.step, exponent);
+    testing::Input_time_limit limit(30, "random_sites(41, 12, 0.25) times 2^" + std::to_string(exponent));
+    const Diagram_mesh mesh = mesh_diagram(scaled, topology_of(scaled), scaled_options);
+    limit.stop();
+    REQUIRE(mesh.points.size() == reference.points.size());
+    REQUIRE(mesh.triangles.size() == reference.triangles.size());
+    double largest_error = 0;
+    for (std::size_t k = 0; k < mesh.points.size(); ++k)
+      for (int a = 0; a < 3; ++a)
+        largest_error = std::max(largest_error, std::fabs(std::ldexp(mesh.points[k][a], -exponent) - reference.points[k][a]));
+    CHECK(largest_error <= 1e-12);
+    std::size_t same_triangles = 0;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) same_triangles += mesh.triangles[t].vertices == reference.triangles[t].vertices;
+    CHECK(same_triangles == mesh.triangles.size());
+  }
+}
+
 TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius w + P") {
   for (std::uint64_t seed = 31; seed <= 36; ++seed) {
     const std::size_t n = 4 + seed % 5;
