@@ -8,12 +8,13 @@
 #include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Lloyd_move_2.h>
-#include <CGAL/Mesh_2/Mesh_global_optimizer_2.h>
+#include <CGAL/Constrained_voronoi_diagram_2.h>
 #include <CGAL/Mesh_2/Face_badness.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <utility>
@@ -243,6 +244,68 @@ void seed_lattice(Triangulation& cdt, const Plane_mesh_input& input, const Plane
   Marker::mark_facets(cdt, seeds.begin(), seeds.end(), false);
 }
 
+// Lloyd iterations under the density (current_density, current_scale), as CGAL's Mesh_global_optimizer_2
+// with Lloyd_move_2 computes them: each free vertex moves to its dual cell's centroid unless the move is
+// below `lloyd_freeze` of its least incident circumradius (it is then frozen), and the iterations stop
+// once the largest 1% of the moves average below `lloyd_convergence` of those radii. The optimizer itself
+// is not used: it keeps the moving vertices in a std::set of handles and so moves them in the order of
+// their addresses, which differ with the thread that meshes the face, and a move's sum over its dual cell
+// starts where that history left the vertex: rounding-level differences, a different mesh for each
+// --threads. (CGAL 5.5's optimizer also leaves its time limit uninitialized: the iterations stopped after
+// whatever the stack held, in CPU seconds.) Here the vertices move in the order of their positions.
+// Returns the iterations done; each costs O(moving vertices x their dual cells) and a re-insertion each.
+int smooth_by_lloyd(Triangulation& cdt, const Plane_mesh_input& input, const std::vector<Point>& seeds) {
+  using Vertex_handle = Triangulation::Vertex_handle;
+  const CGAL::Mesh_2::Lloyd_move_2<Triangulation, Density_sizing> move_of;
+  const Density_sizing sizing(cdt);
+  const auto by_position = [](const Vertex_handle& a, const Vertex_handle& b) {
+    return a->point().x() < b->point().x() || (a->point().x() == b->point().x() && a->point().y() < b->point().y());
+  };
+  std::vector<Vertex_handle> moving;
+  for (Vertex_handle v : cdt.finite_vertex_handles())
+    if (!cdt.are_there_incident_constraints(v)) moving.push_back(v);
+  const std::size_t initial = moving.size(), big_moves = std::max<std::size_t>(1, initial / 100);
+  const double squared_freeze = input.lloyd_freeze * input.lloyd_freeze;
+  std::size_t moving_before = std::numeric_limits<std::size_t>::max();
+  int iteration = 0;
+  for (; iteration < input.lloyd_iterations; ++iteration) {
+    CGAL::Constrained_voronoi_diagram_2<Triangulation>(cdt).tag_faces_blind();
+    std::sort(moving.begin(), moving.end(), by_position);
+    std::vector<std::pair<Vertex_handle, Point>> moves;
+    std::vector<double> ratios;  // squared move over least squared circumradius, of the moves made
+    std::vector<Vertex_handle> still_moving;
+    for (const Vertex_handle& v : moving) {
+      const Kernel::Vector_2 move = move_of(v, cdt, sizing);
+      double least = std::numeric_limits<double>::max();
+      auto face = cdt.incident_faces(v), end = face;
+      do
+        if (!cdt.is_infinite(face)) least = std::min(least, CGAL::squared_distance(cdt.circumcenter(face), face->vertex(0)->point()));
+      while (++face != end);
+      const double ratio = least > 0 ? move.squared_length() / least : 0;
+      if (move == CGAL::NULL_VECTOR || least == 0 || ratio < squared_freeze) continue;  // frozen
+      moves.push_back({v, v->point() + move});
+      ratios.push_back(ratio);
+      still_moving.push_back(v);
+    }
+    if (squared_freeze > 0 && moving_before < 0.01 * static_cast<double>(initial) && moving_before == still_moving.size())
+      break;
+    std::sort(ratios.begin(), ratios.end(), std::greater<>());
+    double sum = 0;
+    for (std::size_t k = 0; k < std::min(big_moves, ratios.size()); ++k) sum += std::sqrt(ratios[k]);
+    if (sum / static_cast<double>(big_moves) < input.lloyd_convergence) break;
+    moving.clear();
+    for (const auto& [v, position] : moves) {
+      const std::size_t vertices = cdt.number_of_vertices();
+      cdt.remove(v);
+      const Vertex_handle moved = cdt.insert(position);
+      if (cdt.number_of_vertices() == vertices) moving.push_back(moved);  // else it met another vertex
+    }
+    moving_before = moving.size();
+    Marker::mark_facets(cdt, seeds.begin(), seeds.end(), false);
+  }
+  return iteration;
+}
+
 }  // namespace
 
 Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
@@ -304,12 +367,8 @@ Plane_mesh_output mesh_plane_region(const Plane_mesh_input& input) {
   if (input.lloyd_iterations > 0) {
     current_density = &input.density;
     current_scale = scale;
-    using Move = CGAL::Mesh_2::Lloyd_move_2<Triangulation, Density_sizing>;
-    CGAL::Mesh_2::Mesh_global_optimizer_2<Triangulation, Move> lloyd(cdt, input.lloyd_convergence, input.lloyd_freeze);
-    lloyd.set_seeds(seeds.begin(), seeds.end(), false);
-    lloyd(input.lloyd_iterations);
+    output.lloyd_iterations = smooth_by_lloyd(cdt, input, seeds);
     current_density = nullptr;
-    output.lloyd_iterations = static_cast<std::size_t>(input.lloyd_iterations);
   }
 
   // Labels: from a constraint around each region whose two points tell one.

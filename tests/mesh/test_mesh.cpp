@@ -363,6 +363,32 @@ TEST_CASE("sites scaled by 2^-300 and 2^300: the same mesh, scaled") {
   }
 }
 
+// Fixed: CGAL's Lloyd optimiser moved vertices in the order of their addresses (and stopped after an
+// uninitialized time limit), so the mesh changed with the thread count and from run to run.
+TEST_CASE("the same mesh, bit for bit, for 1 and 2 threads and when run again") {
+  for (std::uint64_t seed : {51, 52}) {
+    CAPTURE(seed);
+    const std::vector<Site> sites = random_sites(seed, 10, 0.25);
+    const Diagram_topology topology = topology_of(sites);
+    Mesh_options options;
+    options.step = 0.06;
+    const Diagram_mesh first = mesh_diagram(sites, topology, options);
+    REQUIRE(first.statistics.lloyd_iterations > 0);
+    for (int threads : {2, 1}) {
+      CAPTURE(threads);
+      options.threads = threads;
+      const Diagram_mesh again = mesh_diagram(sites, topology, options);
+      REQUIRE(again.points.size() == first.points.size());
+      REQUIRE(again.triangles.size() == first.triangles.size());
+      std::size_t same_points = 0, same_triangles = 0;
+      for (std::size_t k = 0; k < first.points.size(); ++k) same_points += again.points[k] == first.points[k];
+      for (std::size_t t = 0; t < first.triangles.size(); ++t) same_triangles += again.triangles[t].vertices == first.triangles[t].vertices;
+      CHECK(same_points == first.points.size());
+      CHECK(same_triangles == first.triangles.size());
+    }
+  }
+}
+
 TEST_CASE("--probe: faces where d <= P, each cell closed by its sphere of radius w + P") {
   for (std::uint64_t seed = 31; seed <= 36; ++seed) {
     const std::size_t n = 4 + seed % 5;
