@@ -92,6 +92,9 @@ int run(const Mesh_command& command, std::ostream& out, std::ostream& err) {
       out << line;
     }
   }
+  if (mesh.statistics.open_cells > 0)  // the mesh is written all the same: its closed cells are usable
+    err << "apollonius3d: warning: " << mesh.statistics.open_cells
+        << " cells are not closed (faces that could not be meshed; --stats has the counts)\n";
   if (command.stats) {
     const Mesh_statistics& s = mesh.statistics;
     err << "mesh count\npoints " << mesh.points.size() << "\ntriangles " << mesh.triangles.size() << "\nfaces_meshed "
