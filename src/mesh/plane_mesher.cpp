@@ -63,8 +63,9 @@ Plane_scale scale_of(const Plane_mesh_input& input) {
 // is skinny in the plane (circumradius over shortest edge above sqrt(2)). Its circumcentre is then at
 // least circumradius from every vertex, and an encroaching one is dropped (no constraint is split), so as
 // in Ruppert's argument no new vertex comes nearer to the others than min(the least distance between the
-// vertices before refinement, size_factor x step / (2 L)) for L the lift's largest stretch over the region, which is finite
-// (the sheet's slope is at most delta / sqrt(f^2 - delta^2), bisector_frame.h): finitely many points.
+// vertices before refinement, size_factor x step / (2 L)) for L the lift's largest stretch over the region,
+// which is finite (the sheet's slope is at most delta / sqrt(f^2 - delta^2), bisector_frame.h): finitely
+// many points.
 // Measured in the lift alone, the angle criterion looped: over a steep sheet (nearly internally tangent
 // balls) the lift stretches one direction up to 6 times, planar circumcentres then never make lifted
 // angles of 20.7 degrees, and the points piled up at one spot without end
@@ -89,13 +90,12 @@ class Lifted_criteria {
         lifted[k] = input_->lift(scale_.to_plane(p));
         planar[k] = {p.x(), p.y(), 0};
       }
-      int exponent = 0;
+      int exponent = 0, unused = 0;
       const std::array<Point3, 3> edges = scaled_edges(lifted, exponent);
-      std::array<double, 3> l{squared_norm(edges[0]), squared_norm(edges[1]), squared_norm(edges[2])};
-      std::sort(l.begin(), l.end());
       const double step = std::ldexp(input_->step, -exponent);  // the step in the edges' scale
-      q.first = std::max(squared_least_sine(lifted), squared_least_sine(planar));
-      q.second = l[2] / (step * step * input_->size_factor * input_->size_factor);
+      double longest_squared = 0;
+      q.first = std::max(squared_least_sine(edges, longest_squared), squared_least_sine(scaled_edges(planar, unused)));
+      q.second = longest_squared / (step * step * input_->size_factor * input_->size_factor);
       return operator()(q);
     }
 
@@ -119,16 +119,20 @@ class Lifted_criteria {
       return e;
     }
 
-    // The squared sine of the triangle's least angle (0 for a degenerate one): invariant under scaling.
-    static double squared_least_sine(const std::array<Point3, 3>& x) {
-      int exponent = 0;
-      const std::array<Point3, 3> e = scaled_edges(x, exponent);
+    // The squared sine of a triangle's least angle (0 for a degenerate one) from its edges (scaled_edges),
+    // and its longest edge squared.
+    static double squared_least_sine(const std::array<Point3, 3>& e, double& longest_squared) {
       std::array<double, 3> l{squared_norm(e[0]), squared_norm(e[1]), squared_norm(e[2])};
       std::sort(l.begin(), l.end());
+      longest_squared = l[2];
       const Point3& u = e[2];  // x1 - x0
       const Point3& v = e[1];  // x2 - x0
       const Point3 c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
       return l[1] * l[2] > 0 ? squared_norm(c) / (l[1] * l[2]) : 0;
+    }
+    static double squared_least_sine(const std::array<Point3, 3>& e) {
+      double unused = 0;
+      return squared_least_sine(e, unused);
     }
 
     static constexpr double kSquaredSineBound = 0.125;
@@ -273,21 +277,20 @@ int smooth_by_lloyd(Triangulation& cdt, const Plane_mesh_input& input, const std
     std::sort(moving.begin(), moving.end(), by_position);
     std::vector<std::pair<Vertex_handle, Point>> moves;
     std::vector<double> ratios;  // squared move over least squared circumradius, of the moves made
-    std::vector<Vertex_handle> still_moving;
     for (const Vertex_handle& v : moving) {
       const Kernel::Vector_2 move = move_of(v, cdt, sizing);
       double least = std::numeric_limits<double>::max();
       auto face = cdt.incident_faces(v), end = face;
       do
-        if (!cdt.is_infinite(face)) least = std::min(least, CGAL::squared_distance(cdt.circumcenter(face), face->vertex(0)->point()));
+        if (!cdt.is_infinite(face))
+          least = std::min(least, CGAL::squared_distance(cdt.circumcenter(face), face->vertex(0)->point()));
       while (++face != end);
       const double ratio = least > 0 ? move.squared_length() / least : 0;
       if (move == CGAL::NULL_VECTOR || least == 0 || ratio < squared_freeze) continue;  // frozen
       moves.push_back({v, v->point() + move});
       ratios.push_back(ratio);
-      still_moving.push_back(v);
     }
-    if (squared_freeze > 0 && moving_before < 0.01 * static_cast<double>(initial) && moving_before == still_moving.size())
+    if (squared_freeze > 0 && moving_before < 0.01 * static_cast<double>(initial) && moving_before == moves.size())
       break;
     std::sort(ratios.begin(), ratios.end(), std::greater<>());
     double sum = 0;

@@ -141,12 +141,13 @@ TEST_CASE("mesh: bad input and bad parameters exit 2 and write nothing") {
 
 TEST_CASE("mesh warns on standard error when cells are left open, and only then") {
   Scratch scratch;
-  const Cli_result closed = run({"mesh", scratch.write("balls.txt", kBalls), "-o", scratch.path("m.ply"), "--lloyd", "2"});
+  const Cli_result closed =
+      run({"mesh", scratch.write("balls.txt", kBalls), "-o", scratch.path("m.ply"), "--lloyd", "2"});
   REQUIRE(closed.code == EXIT_OK);
   CHECK(closed.err.find("not closed") == std::string::npos);
   // 300 balls tangent to one sphere: faces near their common vertex keep crossing chords, and 8 cells stay open.
-  const Cli_result open = run({"mesh", std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_crashed_where_edge_chords_cross.balls",
-                               "-o", scratch.path("open.ply"), "--lloyd", "2", "--stats"});
+  const std::string input = std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_crashed_where_edge_chords_cross.balls";
+  const Cli_result open = run({"mesh", input, "-o", scratch.path("open.ply"), "--lloyd", "2", "--stats"});
   REQUIRE(open.code == EXIT_OK);
   CHECK(open.err.find("cells are not closed") != std::string::npos);
   CHECK(open.err.find("open_cells 0\n") == std::string::npos);

@@ -289,7 +289,8 @@ TEST_CASE("regression: measure_cells_volumes_exceed_box, against the closed mesh
 // Fixed: refinement measured the least angle on the lifted triangles alone, which planar circumcentres cannot
 // raise where the sheet's lift stretches one direction 6 times; the points piled up at one spot without end.
 TEST_CASE("regression: mesh_refinement_never_ended_on_a_steep_sheet, closed cells of a bounded point density") {
-  const std::string path = std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_refinement_never_ended_on_a_steep_sheet.balls";
+  const std::string path =
+      std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_refinement_never_ended_on_a_steep_sheet.balls";
   const Site_input input = read_sites(path, Read_options{});
   const Diagram_topology topology = topology_of(input.sites);
   Mesh_options options;
@@ -314,7 +315,8 @@ TEST_CASE("regression: mesh_refinement_never_ended_on_a_steep_sheet, closed cell
 // Fixed: two faces' edge chords cross near the vertex where all 300 balls tie, and the constrained
 // triangulation, told that intersections were constructed exactly (they are rounded), crashed.
 TEST_CASE("regression: mesh_crashed_where_edge_chords_cross, and the open cells it reports are the open ones") {
-  const std::string path = std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_crashed_where_edge_chords_cross.balls";
+  const std::string path =
+      std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_crashed_where_edge_chords_cross.balls";
   const Site_input input = read_sites(path, Read_options{});
   const Diagram_topology topology = topology_of(input.sites);
   Mesh_options options;
@@ -356,10 +358,12 @@ TEST_CASE("sites scaled by 2^-300 and 2^300: the same mesh, scaled") {
     double largest_error = 0;
     for (std::size_t k = 0; k < mesh.points.size(); ++k)
       for (int a = 0; a < 3; ++a)
-        largest_error = std::max(largest_error, std::fabs(std::ldexp(mesh.points[k][a], -exponent) - reference.points[k][a]));
+        largest_error =
+            std::max(largest_error, std::fabs(std::ldexp(mesh.points[k][a], -exponent) - reference.points[k][a]));
     CHECK(largest_error <= 1e-12);
     std::size_t same_triangles = 0;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) same_triangles += mesh.triangles[t].vertices == reference.triangles[t].vertices;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      same_triangles += mesh.triangles[t].vertices == reference.triangles[t].vertices;
     CHECK(same_triangles == mesh.triangles.size());
   }
 }
@@ -383,7 +387,8 @@ TEST_CASE("the same mesh, bit for bit, for 1 and 2 threads and when run again") 
       REQUIRE(again.triangles.size() == first.triangles.size());
       std::size_t same_points = 0, same_triangles = 0;
       for (std::size_t k = 0; k < first.points.size(); ++k) same_points += again.points[k] == first.points[k];
-      for (std::size_t t = 0; t < first.triangles.size(); ++t) same_triangles += again.triangles[t].vertices == first.triangles[t].vertices;
+      for (std::size_t t = 0; t < first.triangles.size(); ++t)
+        same_triangles += again.triangles[t].vertices == first.triangles[t].vertices;
       CHECK(same_points == first.points.size());
       CHECK(same_triangles == first.triangles.size());
     }
