@@ -286,28 +286,39 @@ TEST_CASE("regression: measure_cells_volumes_exceed_box, against the closed mesh
   }
 }
 
+// A regression file, its topology, and its mesh made within `seconds` of CPU time (else the test program ends
+// with exit code 124, naming the file).
+namespace {
+struct Meshed_file {
+  Site_input input;
+  Diagram_topology topology;
+  Diagram_mesh mesh;
+};
+
+Meshed_file mesh_regression_file(const std::string& name, const Mesh_options& options, double seconds) {
+  const std::string path = std::string(APOLLONIUS_TEST_DATA) + "/regression/" + name;
+  Meshed_file result{read_sites(path, Read_options{}), {}, {}};
+  result.topology = topology_of(result.input.sites);
+  testing::Input_time_limit limit(seconds, path);
+  result.mesh = mesh_diagram(result.input.sites, result.topology, options);
+  return result;
+}
+}  // namespace
+
 // Fixed: refinement measured the least angle on the lifted triangles alone, which planar circumcentres cannot
 // raise where the sheet's lift stretches one direction 6 times; the points piled up at one spot without end.
 TEST_CASE("regression: mesh_refinement_never_ended_on_a_steep_sheet, closed cells of a bounded point density") {
-  const std::string path =
-      std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_refinement_never_ended_on_a_steep_sheet.balls";
-  const Site_input input = read_sites(path, Read_options{});
-  const Diagram_topology topology = topology_of(input.sites);
   Mesh_options options;
   options.step = 0.6;  // 2.5 times the default: the stretch, and so the pile-up, does not depend on the step
   options.lloyd_iterations = 2;
-  testing::Input_time_limit limit(30, path);
-  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
-  limit.stop();
-  check_mesh(input.sites, mesh, topology, path);
+  const std::string name = "mesh_refinement_never_ended_on_a_steep_sheet.balls";
+  const Meshed_file meshed = mesh_regression_file(name, options, 30);
+  const Diagram_mesh& mesh = meshed.mesh;
+  check_mesh(meshed.input.sites, mesh, meshed.topology, name);
   // Delaunay refinement leaves edges of about the step (1.4 S at most): a few points per S^2 of surface.
-  double area = 0;
-  for (const Mesh_triangle& t : mesh.triangles) {
-    const Point3 &a = mesh.points[t.vertices[0]], &b = mesh.points[t.vertices[1]], &c = mesh.points[t.vertices[2]];
-    const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    area += 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) + std::pow(u[2] * v[0] - u[0] * v[2], 2) +
-                            std::pow(u[0] * v[1] - u[1] * v[0], 2));
-  }
+  std::vector<std::array<std::uint32_t, 3>> every_triangle;
+  for (const Mesh_triangle& t : mesh.triangles) every_triangle.push_back(t.vertices);
+  const double area = check_cell(mesh, every_triangle).area;
   MESSAGE(mesh.points.size() << " points on " << area / (mesh.step * mesh.step) << " S^2");
   CHECK(static_cast<double>(mesh.points.size()) <= 4 * area / (mesh.step * mesh.step));
 }
@@ -315,19 +326,14 @@ TEST_CASE("regression: mesh_refinement_never_ended_on_a_steep_sheet, closed cell
 // Fixed: two faces' edge chords cross near the vertex where all 300 balls tie, and the constrained
 // triangulation, told that intersections were constructed exactly (they are rounded), crashed.
 TEST_CASE("regression: mesh_crashed_where_edge_chords_cross, and the open cells it reports are the open ones") {
-  const std::string path =
-      std::string(APOLLONIUS_TEST_DATA) + "/regression/mesh_crashed_where_edge_chords_cross.balls";
-  const Site_input input = read_sites(path, Read_options{});
-  const Diagram_topology topology = topology_of(input.sites);
   Mesh_options options;
   options.lloyd_iterations = 2;
-  testing::Input_time_limit limit(30, path);
-  const Diagram_mesh mesh = mesh_diagram(input.sites, topology, options);
-  limit.stop();
+  const Meshed_file meshed = mesh_regression_file("mesh_crashed_where_edge_chords_cross.balls", options, 30);
+  const Diagram_mesh& mesh = meshed.mesh;
   REQUIRE(!mesh.triangles.empty());
   for (const Point3& p : mesh.points) CHECK((std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])));
   std::size_t open = 0;
-  for (const Diagram_cell& cell : topology.cells) {
+  for (const Diagram_cell& cell : meshed.topology.cells) {
     const auto triangles = cell_triangles(mesh, cell.site);
     if (!triangles.empty() && !check_cell(mesh, triangles).closed) ++open;
   }
